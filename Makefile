@@ -1,0 +1,31 @@
+# Thin wrapper over CMake. `make demo` builds and runs the main job; `make test` builds and runs
+# every test twice: a debug build, then an AddressSanitizer + UBSan build.
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE ?= cmake
+
+.PHONY: all build demo test test-debug test-asan clean
+
+all: build
+
+build:
+	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=Release -DFL_TESTS=OFF >/dev/null
+	$(CMAKE) --build build -j $(JOBS)
+
+demo: build
+	./build/flintstone demo
+
+test: test-debug test-asan
+
+test-debug:
+	$(CMAKE) -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug >/dev/null
+	$(CMAKE) --build build-debug -j $(JOBS)
+	cd build-debug && ctest --output-on-failure -j $(JOBS)
+
+test-asan:
+	$(CMAKE) -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DFL_SANITIZE=ON >/dev/null
+	$(CMAKE) --build build-asan -j $(JOBS)
+	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+		ctest --output-on-failure -j $(JOBS)
+
+clean:
+	rm -rf build build-debug build-asan

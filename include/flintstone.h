@@ -1,0 +1,123 @@
+/*
+ * flintstone — closed object boundaries from scattered points.
+ *
+ * The one public header. Conventions (see docs/architecture.md):
+ *  - Plain data at the boundary: flat arrays of doubles and uint32_t indices, counts, and an
+ *    options struct where "all zero" is a documented, safe default.
+ *  - Errors are values: every fallible call returns fl_status and, when err is not NULL, fills
+ *    it with a message a user can act on. No call aborts or prints.
+ *  - Results that own memory are released with the one matching fl_*_free; freeing a zeroed or
+ *    already-freed struct is a no-op.
+ *  - No global state; every function is re-entrant.
+ */
+#ifndef FLINTSTONE_H
+#define FLINTSTONE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ==== core ================================================================================ */
+
+/* Status of a call. The numeric values are also the CLI's exit codes (FL_ERR_NOMEM exits 3). */
+typedef enum fl_status {
+    FL_OK = 0,
+    FL_ERR_USAGE = 1,     /* a caller error: bad argument or option value */
+    FL_ERR_INPUT = 2,     /* the input data is malformed or unsuitable (NaN, too few points...) */
+    FL_ERR_ALGORITHM = 3, /* the algorithm could not complete; the message says why */
+    FL_ERR_IO = 4,        /* a file could not be opened, read or written */
+    FL_ERR_NOMEM = 5      /* an allocation failed or a size would overflow */
+} fl_status;
+
+/* Where and why a call failed. `file` is empty and `line`/`offset` are -1 when unknown.
+ * For text files `line` is 1-based; for binary files `offset` is the byte offset. */
+typedef struct fl_error {
+    fl_status status;
+    char file[512];
+    long line;
+    long long offset;
+    char message[512];
+} fl_error;
+
+/* Progress callback: `fraction` in [0,1] of `stage` (a short static string). Return nonzero to
+ * ask the running call to stop; it then returns FL_ERR_ALGORITHM with message "cancelled". */
+typedef int (*fl_progress_fn)(void *user, const char *stage, double fraction);
+
+/* Library version, e.g. "0.1.0". */
+const char *fl_version(void);
+
+/* A short name for a status, e.g. "bad input". */
+const char *fl_status_string(fl_status status);
+
+/* Formats `err` as "<file>:<line>: <message>" (or the parts that are known) into buf. */
+void fl_error_format(const fl_error *err, char *buf, size_t size);
+
+/* A point set: `count` points of dimension `dim` (2 or 3), coordinates interleaved in
+ * `coords` (count*dim doubles). */
+typedef struct fl_points {
+    size_t count;
+    int dim;
+    double *coords;
+} fl_points;
+
+void fl_points_free(fl_points *points);
+
+/* A triangle mesh: `vertex_count` vertices (xyz interleaved) and `triangle_count` triangles of
+ * three 0-based vertex indices each, counter-clockwise seen from outside for oriented meshes. */
+typedef struct fl_mesh {
+    size_t vertex_count;
+    double *xyz;
+    size_t triangle_count;
+    uint32_t *tri;
+} fl_mesh;
+
+void fl_mesh_free(fl_mesh *mesh);
+
+/* Planar polygons with holes. The vertices of all rings are in `xy` (vertex_count pairs).
+ * Ring r spans vertices ring_start[r] .. ring_start[r+1]-1 (ring_start has ring_count+1
+ * entries) and is closed implicitly (its last vertex is not a repeat of the first).
+ * Polygon p spans rings polygon_start[p] .. polygon_start[p+1]-1 (polygon_count+1 entries);
+ * its first ring is the outer boundary, the others are holes. */
+typedef struct fl_polygon {
+    size_t vertex_count;
+    double *xy;
+    size_t ring_count;
+    size_t *ring_start;
+    size_t polygon_count;
+    size_t *polygon_start;
+} fl_polygon;
+
+void fl_polygon_free(fl_polygon *polygon);
+
+/* ==== predicates ========================================================================== */
+/* (section owned by src/predicates) */
+
+/* end of predicates */
+
+
+/* ==== io ================================================================================== */
+/* (section owned by src/io) */
+
+/* end of io */
+
+
+/* ==== mesh ================================================================================ */
+/* (section owned by src/mesh) */
+
+/* end of mesh */
+
+
+/* ==== delaunay ============================================================================ */
+/* (section owned by src/delaunay) */
+
+/* end of delaunay */
+
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FLINTSTONE_H */

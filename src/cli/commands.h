@@ -1,0 +1,7 @@
+/* Entry points of the subcommands, one file each. */
+#ifndef FL_CLI_COMMANDS_H
+#define FL_CLI_COMMANDS_H
+
+int cmd_version(int argc, char **argv);
+
+#endif

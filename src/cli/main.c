@@ -1,0 +1,50 @@
+/* The `flintstone` command: parses the subcommand and hands over. Each subcommand lives in its
+ * own file (cmd_<name>.c) and follows the contract in cli.h. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "cli/commands.h"
+
+static const cli_command commands[] = {
+    {"version", "print the version", cmd_version},
+};
+
+static void usage(FILE *fp)
+{
+    fprintf(fp, "usage: flintstone <command> [options]\n"
+                "       flintstone --help | --version\n\n"
+                "Closed object boundaries from scattered points.\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(fp, "  %-12s %s\n", commands[i].name, commands[i].summary);
+    fprintf(fp, "\nEvery command takes --help, -o PATH (format by extension), --json, --quiet.\n"
+                "Exit codes: 0 ok, 1 usage, 2 bad input, 3 could not complete, 4 I/O failure.\n");
+}
+
+int cmd_version(int argc, char **argv)
+{
+    (void)argc;
+    (void)argv;
+    printf("flintstone %s\n", fl_version());
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return 1;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
+        strcmp(argv[1], "help") == 0) {
+        usage(stdout);
+        return 0;
+    }
+    if (strcmp(argv[1], "--version") == 0) {
+        printf("flintstone %s\n", fl_version());
+        return 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (strcmp(argv[1], commands[i].name) == 0) return commands[i].run(argc - 1, argv + 1);
+    return cli_fail(1, "unknown command '%s' (see flintstone --help)", argv[1]);
+}

@@ -112,36 +112,76 @@ fl_status fl_dt_unique(const double *coords, size_t n, int dim, uint32_t *rep, s
 
 /* ---- Hilbert keys ----------------------------------------------------------------------- */
 
-/* Hilbert index of the cell x[0..dim) (each < 2^bits) by Skilling's transposition method
- * ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004): undo the excess rotations and
- * reflections level by level, Gray-encode, then interleave the bits, most significant first. */
-static uint64_t hilbert_key(uint32_t *x, int dim, int bits)
+/* Bit i of v moved to bit 2i (2D) or 3i (3D, v < 2^21): the interleaving of a Morton code. */
+static uint64_t spread2(uint32_t v)
 {
-    uint32_t top = 1u << (bits - 1);
-    for (uint32_t q = top; q > 1; q >>= 1) {
-        uint32_t low = q - 1;
-        for (int i = 0; i < dim; i++) {
-            if (x[i] & q) {
-                x[0] ^= low; /* reflect */
-            } else {
-                uint32_t t = (x[0] ^ x[i]) & low; /* swap the low bits of x[0] and x[i] */
-                x[0] ^= t;
-                x[i] ^= t;
-            }
-        }
-    }
-    for (int i = 1; i < dim; i++)
-        x[i] ^= x[i - 1];
+    uint64_t x = v;
+    x = (x | x << 16) & 0x0000FFFF0000FFFFULL;
+    x = (x | x << 8) & 0x00FF00FF00FF00FFULL;
+    x = (x | x << 4) & 0x0F0F0F0F0F0F0F0FULL;
+    x = (x | x << 2) & 0x3333333333333333ULL;
+    return (x | x << 1) & 0x5555555555555555ULL;
+}
+
+static uint64_t spread3(uint32_t v)
+{
+    uint64_t x = v & 0x1FFFFFu;
+    x = (x | x << 32) & 0x001F00000000FFFFULL;
+    x = (x | x << 16) & 0x001F0000FF0000FFULL;
+    x = (x | x << 8) & 0x100F00F00F00F00FULL;
+    x = (x | x << 4) & 0x10C30C30C30C30C3ULL;
+    return (x | x << 2) & 0x1249249249249249ULL;
+}
+
+/* One level of Skilling's inverse "undo excess work" step on coordinate x[i] against x[0]: if
+ * bit `level` of xi is set, reflect the low bits of x0, else swap the low bits of x0 and xi.
+ * Branch-free: the coordinate bits are random, so branches on them would mispredict half the
+ * time (that made the branchy form the most expensive part of the whole sort). */
+#define HILBERT_UNDO(x0, xi, level, low)                                                           \
+    do {                                                                                           \
+        uint32_t set_ = 0u - (((xi) >> (level)) & 1u);                                             \
+        uint32_t t_ = ((x0) ^ (xi)) & (low) & ~set_;                                               \
+        (x0) ^= ((low)&set_) | t_;                                                                 \
+        (xi) ^= t_;                                                                                \
+    } while (0)
+
+/* The Gray-code correction of Skilling's method: XOR of the low masks of the set bits of x. */
+static uint32_t gray_fix(uint32_t x, int bits)
+{
     uint32_t t = 0;
-    for (uint32_t q = top; q > 1; q >>= 1)
-        if (x[dim - 1] & q) t ^= q - 1;
-    for (int i = 0; i < dim; i++)
-        x[i] ^= t;
-    uint64_t key = 0;
-    for (int b = bits - 1; b >= 0; b--)
-        for (int i = 0; i < dim; i++)
-            key = (key << 1) | ((x[i] >> b) & 1u);
-    return key;
+    for (int level = bits - 1; level > 0; level--)
+        t ^= ((1u << level) - 1) & (0u - ((x >> level) & 1u));
+    return t;
+}
+
+/* Hilbert index of a cell (each coordinate < 2^bits) by Skilling's transposition method
+ * ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004): undo the excess rotations and
+ * reflections level by level, Gray-encode, then interleave the bits, most significant first.
+ * Written out per dimension so the coordinates stay in registers. */
+static uint64_t hilbert_key2(uint32_t x0, uint32_t x1)
+{
+    for (int level = 31; level > 0; level--) {
+        uint32_t low = (1u << level) - 1;
+        HILBERT_UNDO(x0, x0, level, low);
+        HILBERT_UNDO(x0, x1, level, low);
+    }
+    x1 ^= x0;
+    uint32_t t = gray_fix(x1, 32);
+    return spread2(x0 ^ t) << 1 | spread2(x1 ^ t);
+}
+
+static uint64_t hilbert_key3(uint32_t x0, uint32_t x1, uint32_t x2)
+{
+    for (int level = 20; level > 0; level--) {
+        uint32_t low = (1u << level) - 1;
+        HILBERT_UNDO(x0, x0, level, low);
+        HILBERT_UNDO(x0, x1, level, low);
+        HILBERT_UNDO(x0, x2, level, low);
+    }
+    x1 ^= x0;
+    x2 ^= x1;
+    uint32_t t = gray_fix(x2, 21);
+    return spread3(x0 ^ t) << 2 | spread3(x1 ^ t) << 1 | spread3(x2 ^ t);
 }
 
 typedef struct bbox {
@@ -182,7 +222,7 @@ static uint64_t point_key(const double *p, const bbox *b, int dim, int bits)
         double c = (0.5 * p[k] - 0.5 * b->lo[k]) * b->scale;
         cell[k] = (uint32_t)(c < max_cell ? c : max_cell);
     }
-    return hilbert_key(cell, dim, bits);
+    return dim == 2 ? hilbert_key2(cell[0], cell[1]) : hilbert_key3(cell[0], cell[1], cell[2]);
 }
 
 /* ---- radix sort of (key, id) pairs --------------------------------------------------------- */
@@ -226,14 +266,18 @@ static void radix_sort(uint64_t *key, uint32_t *id, uint64_t *tkey, uint32_t *ti
 
 /* ---- BRIO -------------------------------------------------------------------------------- */
 
-static void shuffle(uint32_t *a, size_t n)
+/* Fisher-Yates shuffle of the pairs (key[i], id[i]). */
+static void shuffle(uint64_t *key, uint32_t *id, size_t n)
 {
     uint64_t state = BRIO_SEED;
     for (size_t i = n; i > 1; i--) {
         size_t j = (size_t)(splitmix64(&state) % i);
-        uint32_t t = a[i - 1];
-        a[i - 1] = a[j];
-        a[j] = t;
+        uint64_t k = key[i - 1];
+        key[i - 1] = key[j];
+        key[j] = k;
+        uint32_t t = id[i - 1];
+        id[i - 1] = id[j];
+        id[j] = t;
     }
 }
 
@@ -259,11 +303,12 @@ fl_status fl_dt_brio_order(const double *coords, const uint32_t *ids, size_t n, 
     }
     int bits = dim == 2 ? 32 : 21; /* dim * bits <= 64 */
     bbox box = bounding_box(coords, ids, n, dim, bits);
-    for (size_t i = 0; i < n; i++)
+    /* Keys in input order (sequential reads of the coordinates), then shuffled with the ids. */
+    for (size_t i = 0; i < n; i++) {
         order_out[i] = ids ? ids[i] : (uint32_t)i;
-    shuffle(order_out, n);
-    for (size_t i = 0; i < n; i++)
         key[i] = point_key(coords + (size_t)order_out[i] * dim, &box, dim, bits);
+    }
+    shuffle(key, order_out, n);
     /* Rounds from last to first: [m/8, m) is a round, then recurse on [0, m/8). */
     size_t m = n;
     while (m / BRIO_RATIO_DIV >= BRIO_MIN_ROUND) {

@@ -24,15 +24,20 @@ static const mesh_format mesh_formats[] = {
 
 #define MESH_FORMAT_LIST ".off .obj .ply .stl"
 
+/* ASCII case-insensitive equality (the extension may be "PLY"). */
+static int same_nocase(const char *a, const char *b)
+{
+    for (; *a && *b; a++, b++) {
+        char x = *a >= 'A' && *a <= 'Z' ? (char)(*a - 'A' + 'a') : *a;
+        if (x != *b) return 0;
+    }
+    return *a == *b;
+}
+
 static const mesh_format *mesh_format_for(const char *ext)
 {
-    char lower[16];
-    size_t n = strlen(ext);
-    if (n >= sizeof lower) return NULL;
-    for (size_t i = 0; i <= n; i++)
-        lower[i] = (char)(ext[i] >= 'A' && ext[i] <= 'Z' ? ext[i] - 'A' + 'a' : ext[i]);
     for (size_t i = 0; i < sizeof mesh_formats / sizeof mesh_formats[0]; i++)
-        if (strcmp(lower, mesh_formats[i].ext) == 0) return &mesh_formats[i];
+        if (same_nocase(ext, mesh_formats[i].ext)) return &mesh_formats[i];
     return NULL;
 }
 

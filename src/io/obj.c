@@ -87,7 +87,7 @@ static fl_status obj_face(obj_reader *r, const char *p, const char *e, long line
 {
     const char *tok;
     size_t len;
-    uint32_t first = 0, prev = 0, cur;
+    uint32_t first = 0, prev = 0, cur = 0;
     long long count = 0;
     while (fl_token_next(&p, e, &tok, &len)) {
         fl_status st = obj_reference(r, tok, len, line, &cur);

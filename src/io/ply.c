@@ -490,7 +490,7 @@ static fl_status ascii_integer(ply_reader *r, const ply_cursor *c, long long *n)
 
 static fl_status ascii_list(ply_reader *r, const ply_cursor *c, const ply_property *p)
 {
-    long long n, v;
+    long long n = 0, v = 0;
     fl_status st = ascii_integer(r, c, &n);
     if (st) return st;
     if (p->role == ROLE_INDICES && n < 3)

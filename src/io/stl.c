@@ -209,7 +209,7 @@ static fl_status stl_facet(stl_ascii *a)
         st = stl_number(a, &normal);
     if (!st) st = stl_expect(a, "outer");
     if (!st) st = stl_expect(a, "loop");
-    uint32_t first = 0, prev = 0, cur;
+    uint32_t first = 0, prev = 0, cur = 0;
     int count = 0;
     while (!st) {
         if (!stl_next(a)) return stl_eof(a, "'vertex' or 'endloop'");

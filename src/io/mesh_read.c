@@ -141,8 +141,12 @@ int fl_parse_integer(const char *tok, size_t len, long long *v)
 
 const char *fl_token_quote(const char *tok, size_t len, char *buf, size_t size)
 {
-    int shown = len > 40 ? 40 : (int)len;
-    snprintf(buf, size, "'%.*s%s'", shown, tok, len > 40 ? "..." : "");
+    /* Bytes that would garble a terminal (binary data read as text) are shown as '?'. */
+    char shown[48];
+    size_t n = len > 40 ? 40 : len;
+    for (size_t i = 0; i < n; i++)
+        shown[i] = tok[i] >= 0x20 && tok[i] < 0x7f ? tok[i] : '?';
+    snprintf(buf, size, "'%.*s%s'", (int)n, shown, len > 40 ? "..." : "");
     return buf;
 }
 

@@ -157,8 +157,87 @@ static void test_mesh_failed_write_leaves_no_file_and_the_target_untouched(void)
     rmdir(dir);
 }
 
+/* A file's bytes in a buffer of exactly its size, so that ASan flags any read past the end. */
+static unsigned char *file_bytes(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    unsigned char *buf = malloc(1 << 16);
+    *size = fread(buf, 1, 1 << 16, f);
+    fclose(f);
+    return buf;
+}
+
+/* Every reader, fed corrupted files, returns OK with a valid mesh or FL_ERR_INPUT with a
+ * location, a message and a zeroed mesh. */
+static void check_corruptions(const char *format, const unsigned char *good, size_t size,
+                              unsigned long long *rng)
+{
+    static const unsigned char interesting[] = {'0', '9',  ' ',  '\n', '-', '.', 'e', '/',
+                                                '#', 0x00, 0x7f, 0xff, 'n', 'i', '3'};
+    for (int iter = 0; iter < 1500; iter++) {
+        size_t len = size;
+        unsigned char *buf = malloc(size);
+        memcpy(buf, good, size);
+        int edits = 1 + (int)(fl_test_rand_u64(rng) % 3);
+        for (int k = 0; k < edits; k++) {
+            size_t at = (size_t)(fl_test_rand_u64(rng) % size);
+            unsigned long long r = fl_test_rand_u64(rng);
+            buf[at] = r & 1 ? interesting[(r >> 1) % sizeof interesting] : (unsigned char)(r >> 8);
+        }
+        if (fl_test_rand_u64(rng) % 4 == 0) len = (size_t)(fl_test_rand_u64(rng) % size);
+        unsigned char *exact = malloc(len ? len : 1);
+        memcpy(exact, buf, len);
+        fl_mesh m;
+        fl_error err;
+        fl_status st = fl_parse_mesh(format, "fuzz", exact, len, &m, &err);
+        CHECK_MSG(st == FL_OK || st == FL_ERR_INPUT, "%s: status %d", format, (int)st);
+        if (st == FL_OK) {
+            int valid = 1;
+            for (size_t i = 0; i < 3 * m.triangle_count; i++)
+                valid &= m.tri[i] < m.vertex_count;
+            for (size_t i = 0; i < 3 * m.vertex_count; i++)
+                valid &= isfinite(m.xyz[i]);
+            CHECK_MSG(valid, "%s: invalid mesh accepted (iteration %d)", format, iter);
+            fl_mesh_free(&m);
+        } else {
+            CHECK_MSG((err.line >= 1 || err.offset >= 0) && err.message[0],
+                      "%s: error without location: %s", format, err.message);
+            CHECK(m.xyz == NULL && m.tri == NULL);
+        }
+        free(exact);
+        free(buf);
+    }
+}
+
+static void test_mesh_readers_survive_random_corruption(void)
+{
+    static const char *paths[] = {"io_mesh_fuzz.off", "io_mesh_fuzz.obj", "io_mesh_fuzz.ply",
+                                  "io_mesh_fuzz.stl"};
+    static const char *ascii_ply =
+        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+        "end_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n4 0 1 2 3\n";
+    static const char *ascii_stl = "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                                   "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n";
+    unsigned long long rng = 99;
+    fl_mesh m = cube();
+    fl_error err;
+    for (size_t i = 0; i < sizeof paths / sizeof paths[0]; i++) {
+        CHECK_STATUS(fl_write_mesh(paths[i], &m, &err), FL_OK, &err);
+        size_t size;
+        unsigned char *good = file_bytes(paths[i], &size);
+        if (good) check_corruptions(paths[i] + strlen(paths[i]) - 3, good, size, &rng);
+        free(good);
+        remove(paths[i]);
+    }
+    check_corruptions("ply", (const unsigned char *)ascii_ply, strlen(ascii_ply), &rng);
+    check_corruptions("stl", (const unsigned char *)ascii_stl, strlen(ascii_stl), &rng);
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_mesh_round_trips_through_every_format_and_case_of_extension),
              FL_TEST_CASE(test_mesh_unknown_extension_is_a_usage_error_listing_the_formats),
              FL_TEST_CASE(test_mesh_read_of_a_missing_file_is_an_io_error),
              FL_TEST_CASE(test_mesh_failed_parse_zeroes_the_output),
-             FL_TEST_CASE(test_mesh_failed_write_leaves_no_file_and_the_target_untouched))
+             FL_TEST_CASE(test_mesh_failed_write_leaves_no_file_and_the_target_untouched),
+             FL_TEST_CASE(test_mesh_readers_survive_random_corruption))

@@ -215,6 +215,14 @@ fl_status fl_write_points(const char *path, const fl_points *points, fl_error *e
 fl_status fl_write_mesh(const char *path, const fl_mesh *mesh, fl_error *err);
 fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error *err);
 
+/* Writes a tetrahedral mesh: `point_count` points xyz[3i..3i+2] and `tet_count` tetrahedra of 4
+ * point indices each (all < point_count). By extension: .vtk (legacy ASCII unstructured grid,
+ * opens in ParaView) or TetGen's .node/.ele pair (either name may be given; both files
+ * "<stem>.node" and "<stem>.ele" are written, 0-based indices with "# firstnumber 0" noted).
+ * Written atomically; on failure no target is changed. */
+fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
+                        const uint32_t *tet, size_t tet_count, fl_error *err);
+
 /* end of io */
 
 

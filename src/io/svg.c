@@ -2,18 +2,23 @@
  * box (plus a margin) starts at the origin and y is flipped, so "up" in the data is up on
  * screen. Each polygon is filled light with the even-odd rule, which leaves its holes empty
  * whatever their orientation; outer rings are then stroked dark and holes in a second colour.
- * Stroke widths are a fixed fraction of the picture, so they look the same at any scale. */
+ * Coordinates are scaled to a picture of fixed size, so stroke widths are fixed too. */
 #include <math.h>
 #include <stdio.h>
 
 #include "io/io_internal.h"
 
+/* The picture is PICTURE units on its longer side plus MARGIN all round; a unit is a pixel. */
+#define PICTURE 1000.0
+#define MARGIN 50.0
+
 typedef struct frame {
-    double min_x, max_y; /* data corner mapped to (margin, margin) */
-    double margin;
-    double width, height; /* of the viewBox */
+    double min_x, max_y; /* the data corner drawn at (MARGIN, MARGIN) */
+    double half;         /* half the longer extent of the data */
+    double width, height;
 } frame;
 
+/* Halving before subtracting keeps the extent finite even for coordinates near +-DBL_MAX. */
 static frame make_frame(const fl_polygon *polygon)
 {
     double min_x = 0, max_x = 0, min_y = 0, max_y = 0;
@@ -24,24 +29,23 @@ static frame make_frame(const fl_polygon *polygon)
         if (i == 0 || y < min_y) min_y = y;
         if (i == 0 || y > max_y) max_y = y;
     }
-    double size = fmax(max_x - min_x, max_y - min_y);
-    /* A single point or an overflowing extent still needs a drawable, finite frame. */
-    if (!(size > 0) || !isfinite(size)) size = 1;
-    frame f = {min_x, max_y, 0.05 * size, 0, 0};
-    f.width = (max_x - min_x) + 2 * f.margin;
-    f.height = (max_y - min_y) + 2 * f.margin;
-    if (!isfinite(f.width)) f.width = 1;
-    if (!isfinite(f.height)) f.height = 1;
+    double half_w = max_x / 2 - min_x / 2, half_h = max_y / 2 - min_y / 2;
+    frame f = {min_x, max_y, fmax(half_w, half_h), 0, 0};
+    if (!(f.half > 0)) f.half = 1; /* a single point: any scale draws it */
+    f.width = PICTURE * (half_w / f.half) + 2 * MARGIN;
+    f.height = PICTURE * (half_h / f.half) + 2 * MARGIN;
     return f;
 }
 
-/* One ring as a closed subpath. %.9g keeps far more precision than a picture shows. */
+/* One ring as a closed subpath, in picture units (a thousandth of the picture is far below
+ * what a viewer shows, so %.7g is plenty). */
 static void ring_subpath(FILE *fp, const fl_polygon *polygon, size_t r, const frame *f)
 {
+    double s = PICTURE;
     for (size_t i = polygon->ring_start[r]; i < polygon->ring_start[r + 1]; i++) {
-        double x = polygon->xy[2 * i] - f->min_x + f->margin;
-        double y = f->max_y - polygon->xy[2 * i + 1] + f->margin;
-        fprintf(fp, "%s%.9g %.9g", i == polygon->ring_start[r] ? "M" : " L", x, y);
+        double x = MARGIN + s * ((polygon->xy[2 * i] / 2 - f->min_x / 2) / f->half);
+        double y = MARGIN + s * ((f->max_y / 2 - polygon->xy[2 * i + 1] / 2) / f->half);
+        fprintf(fp, "%s%.7g %.7g", i == polygon->ring_start[r] ? "M" : " L", x, y);
     }
     fputs(" Z", fp);
 }
@@ -64,17 +68,14 @@ static void ring_strokes(FILE *fp, const fl_polygon *polygon, const frame *f, in
 fl_status fl_svg_polygon_write(FILE *fp, const fl_polygon *polygon)
 {
     frame f = make_frame(polygon);
-    /* Scale the picture so its longer side is 800 pixels. */
-    double longer = fmax(f.width, f.height);
-    double px_w = 800 * f.width / longer, px_h = 800 * f.height / longer;
-    double stroke = 0.002 * longer;
+    double stroke = 0.002 * PICTURE;
     fprintf(fp,
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"%.1f\" "
-            "height=\"%.1f\" viewBox=\"0 0 %.9g %.9g\">\n",
-            px_w, px_h, f.width, f.height);
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"%.7g\" "
+            "height=\"%.7g\" viewBox=\"0 0 %.7g %.7g\">\n",
+            f.width, f.height, f.width, f.height);
     fprintf(fp, "<title>%zu polygons, %zu rings, %zu vertices</title>\n", polygon->polygon_count,
             polygon->ring_count, polygon->vertex_count);
-    fprintf(fp, "<rect width=\"%.9g\" height=\"%.9g\" fill=\"white\"/>\n", f.width, f.height);
+    fprintf(fp, "<rect width=\"%.7g\" height=\"%.7g\" fill=\"white\"/>\n", f.width, f.height);
     fputs("<g fill=\"#cfe0f3\" fill-rule=\"evenodd\" stroke=\"none\">\n", fp);
     for (size_t p = 0; p < polygon->polygon_count; p++) {
         fputs("<path d=\"", fp);

@@ -188,7 +188,8 @@ static fl_status parse_string(parser *ps, size_t *off, size_t *len)
         const char *run = ps->p;
         while (ps->p < ps->end && *ps->p != '"' && *ps->p != '\\' && (unsigned char)*ps->p >= 0x20)
             ps->p++;
-        if (fl_vec_push(&ps->strings, run, (size_t)(ps->p - run))) return out_of_memory(ps);
+        if (ps->p > run && fl_vec_push(&ps->strings, run, (size_t)(ps->p - run)))
+            return out_of_memory(ps);
         if (ps->p >= ps->end)
             return fail_at(ps, start_line, "unterminated string (it starts at line %ld)",
                            start_line);

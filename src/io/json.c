@@ -166,7 +166,7 @@ static fl_status escape(parser *ps, long start_line)
     if (hit) {
         bad = fl_vec_push(&ps->strings, &to[hit - from], 1);
     } else if (c == 'u') {
-        unsigned cp;
+        unsigned cp = 0;
         fl_status st = unicode_escape(ps, &cp);
         if (st != FL_OK) return st;
         bad = push_utf8(&ps->strings, cp);
@@ -294,7 +294,7 @@ static fl_status parse_array(parser *ps, int depth, size_t *index)
     }
     size_t last = FL_JSON_NONE;
     for (;;) {
-        size_t child;
+        size_t child = 0;
         if ((st = parse_value(ps, depth + 1, &child)) != FL_OK) return st;
         link_child(ps, *index, &last, child);
         int more = after_element(ps, ']', "array", start_line);
@@ -335,7 +335,7 @@ static fl_status parse_object(parser *ps, int depth, size_t *index)
     }
     size_t last = FL_JSON_NONE;
     for (;;) {
-        size_t child;
+        size_t child = 0;
         if ((st = parse_member(ps, depth, &child)) != FL_OK) return st;
         link_child(ps, *index, &last, child);
         int more = after_element(ps, '}', "object", start_line);
@@ -396,7 +396,7 @@ fl_status fl_json_parse(const char *name, const char *data, size_t size, fl_json
     fl_vec_init(&ps.nodes, sizeof(fl_json_node));
     fl_vec_init(&ps.strings, 1);
     if (size >= 3 && memcmp(data, "\xEF\xBB\xBF", 3) == 0) ps.p += 3; /* RFC 8259 §8.1 */
-    size_t root;
+    size_t root = 0;
     fl_status st = parse_value(&ps, 0, &root);
     if (st == FL_OK) {
         skip_ws(&ps);

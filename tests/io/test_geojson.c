@@ -248,6 +248,59 @@ static void test_geojson_round_trip_is_exact(void)
     free(text);
 }
 
+/* Random byte edits of a valid file must never crash or read out of bounds (ASan watches), and
+ * each result is either a consistent polygon or FL_ERR_INPUT with a zeroed output. */
+static void test_geojson_mutated_inputs_fail_cleanly(void)
+{
+    const char *seed = "{\"type\": \"FeatureCollection\", \"features\": [\n"
+                       " {\"type\": \"Feature\", \"properties\": {\"n\": \"a\\u00e9\\n\"},\n"
+                       "  \"geometry\": {\"type\": \"Polygon\", \"coordinates\": [\n"
+                       "   [[0,0],[4,0],[4,4],[0,4],[0,0]], [[1,1],[1,2],[2,2],[1,1]]]}},\n"
+                       " {\"type\": \"Feature\", \"geometry\": {\"type\": \"MultiPolygon\",\n"
+                       "  \"coordinates\": [[[[5,5],[6,5],[6,6e0],[5,5]]]]}}]}\n";
+    static const char alphabet[] = "{}[],:\"\\-+.eE0123456789 \nabnutrfl\x01\xff";
+    size_t n = strlen(seed);
+    unsigned long long rng = 99;
+    int ok = 0;
+    for (int trial = 0; trial < 3000; trial++) {
+        char *buf = malloc(n);
+        memcpy(buf, seed, n);
+        size_t len = n;
+        int edits = 1 + (int)(fl_test_rand_u64(&rng) % 3);
+        for (int e = 0; e < edits; e++) {
+            size_t at = (size_t)(fl_test_rand_u64(&rng) % len);
+            unsigned long long kind = fl_test_rand_u64(&rng) % 3;
+            if (kind == 0)
+                buf[at] = alphabet[fl_test_rand_u64(&rng) % (sizeof alphabet - 1)];
+            else if (kind == 1)
+                len = at + 1; /* truncate */
+            else
+                memmove(buf + at, buf + at + 1, --len - at); /* delete a byte */
+            if (len == 0) break;
+        }
+        fl_polygon p;
+        fl_error err;
+        fl_status st = fl_geojson_parse("m.geojson", buf, len, &p, &err);
+        if (st == FL_OK) {
+            ok++;
+            CHECK(p.ring_start[0] == 0 && p.ring_start[p.ring_count] == p.vertex_count);
+            CHECK(p.polygon_start[p.polygon_count] == p.ring_count);
+            for (size_t r = 0; r < p.ring_count; r++)
+                CHECK(p.ring_start[r + 1] - p.ring_start[r] >= 3);
+        } else {
+            CHECK_EQ_INT(st, FL_ERR_INPUT);
+            CHECK(p.xy == NULL && p.ring_start == NULL && p.polygon_start == NULL);
+            long lines = 1;
+            for (size_t i = 0; i < len; i++)
+                lines += buf[i] == '\n';
+            CHECK(err.line >= -1 && err.line <= lines && err.line != 0);
+        }
+        fl_polygon_free(&p);
+        free(buf);
+    }
+    CHECK(ok > 0); /* some edits (e.g. a digit for a digit) keep the file valid */
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_geojson_polygon_with_hole),
              FL_TEST_CASE(test_geojson_multipolygon_and_3d_positions),
              FL_TEST_CASE(test_geojson_feature_collection_skips_other_geometries),
@@ -256,4 +309,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_geojson_polygon_with_hole),
              FL_TEST_CASE(test_geojson_malformed_inputs_name_their_line),
              FL_TEST_CASE(test_json_depth_bomb_is_refused),
              FL_TEST_CASE(test_geojson_unterminated_buffer_not_overread),
-             FL_TEST_CASE(test_geojson_round_trip_is_exact))
+             FL_TEST_CASE(test_geojson_round_trip_is_exact),
+             FL_TEST_CASE(test_geojson_mutated_inputs_fail_cleanly))

@@ -1,11 +1,60 @@
+#include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "io/text_scan.h"
 
+/* Clinger's fast path (W. D. Clinger, "How to read floating point numbers accurately", PLDI
+ * 1990): when the decimal significand w is at most 2^53 and 10^k has |k| <= 22, both are exact
+ * doubles, so w * 10^k (or w / 10^-k) is one correctly rounded IEEE operation and equals what a
+ * correctly rounding strtod returns. It covers the usual "%.6f"-style coordinates; anything else
+ * (more than 15-16 digits, hex, nan, ...) goes to strtod. It needs operations evaluated in
+ * double precision (FLT_EVAL_METHOD 0, as on x86-64 and AArch64), not x87 extended. */
+static int fast_decimal(const char *p, const char *end, double *value)
+{
+#if FLT_EVAL_METHOD != 0
+    return 0;
+#endif
+    static const double pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                     1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    int negative = p < end && *p == '-';
+    if (p < end && (*p == '-' || *p == '+')) p++;
+    uint64_t w = 0;
+    int digits = 0, any = 0, exp10 = 0, fraction = 0;
+    for (; p < end; p++) {
+        if (*p == '.' && !fraction) {
+            fraction = 1;
+            continue;
+        }
+        if (*p < '0' || *p > '9') break;
+        any = 1;
+        exp10 -= fraction;
+        if (w == 0 && *p == '0') continue; /* leading zeros carry no digits */
+        if (++digits > 19) return 0;       /* w would overflow 64 bits */
+        w = w * 10 + (uint64_t)(*p - '0');
+    }
+    if (!any) return 0;
+    if (p < end && (*p == 'e' || *p == 'E')) {
+        int minus = ++p < end && *p == '-';
+        if (p < end && (*p == '-' || *p == '+')) p++;
+        if (p == end || *p < '0' || *p > '9') return 0;
+        int e = 0;
+        for (; p < end && *p >= '0' && *p <= '9'; p++)
+            if (e < 10000) e = e * 10 + (*p - '0');
+        exp10 += minus ? -e : e;
+    }
+    if (p != end || w > (UINT64_C(1) << 53) || exp10 < -22 || exp10 > 22) return 0;
+    double v = exp10 < 0 ? (double)w / pow10[-exp10] : (double)w * pow10[exp10];
+    *value = negative ? -v : v;
+    return 1;
+}
+
 fl_number_scan fl_scan_double(const char *s, size_t len, double *value)
 {
+    if (fast_decimal(s, s + len, value)) return FL_NUMBER_OK;
     /* strtod needs a NUL-terminated string and would skip leading whitespace; the bounded copy
      * gives it exactly the token, so it cannot run past the caller's buffer. */
     char buf[FL_TEXT_MAX_TOKEN];

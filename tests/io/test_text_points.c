@@ -4,6 +4,7 @@
 #include <time.h>
 
 #include "io/io_internal.h"
+#include "io/text_scan.h"
 #include "io_test_util.h"
 
 static fl_status parse(const char *text, fl_points *pts, fl_error *err)
@@ -267,6 +268,57 @@ static void test_points_mutated_inputs_fail_cleanly(void)
     }
 }
 
+/* fl_scan_double takes a fast path for short decimals; strtod (correctly rounded in glibc) is
+ * the oracle: both must give the same bits for decimals of every shape near the fast path's
+ * limits (up to 19 digits, exponents around +-22, leading zeros, signs, no integer part). */
+static void test_scan_double_matches_strtod_bit_for_bit(void)
+{
+    unsigned long long rng = 123;
+    char s[64];
+    for (int trial = 0; trial < 200000; trial++) {
+        size_t n = 0;
+        unsigned long long r = fl_test_rand_u64(&rng);
+        if (r & 1) s[n++] = (r & 2) ? '-' : '+';
+        int digits = 1 + (int)((r >> 2) % 19), point = (int)((r >> 8) % (unsigned)(digits + 2));
+        int zeros = (int)((r >> 16) % 4);
+        for (int i = 0; i < zeros; i++)
+            s[n++] = '0';
+        for (int i = 0; i < digits; i++) {
+            if (i == point) s[n++] = '.';
+            s[n++] = (char)('0' + fl_test_rand_u64(&rng) % 10);
+        }
+        if ((r >> 24) & 1) n += (size_t)sprintf(s + n, "e%d", (int)((r >> 32) % 61) - 30);
+        s[n] = '\0';
+        char *stop;
+        double want = strtod(s, &stop), got = 0;
+        fl_number_scan st = fl_scan_double(s, n, &got);
+        if (stop != s + n) {
+            CHECK_MSG(st == FL_NUMBER_INVALID, "'%s'", s);
+        } else {
+            CHECK_MSG(st == FL_NUMBER_OK && memcmp(&got, &want, sizeof got) == 0,
+                      "'%s': %.17g vs strtod %.17g", s, got, want);
+        }
+    }
+    static const char *edge[] = {"9007199254740993",
+                                 "9007199254740992e22",
+                                 "1e23",
+                                 "-0",
+                                 "0.000",
+                                 "1.",
+                                 ".5",
+                                 "123456789012345678901",
+                                 "4.35e-3",
+                                 "1e-22",
+                                 "9999999999999999999e-22",
+                                 "0e999"};
+    for (size_t i = 0; i < sizeof edge / sizeof edge[0]; i++) {
+        double got = 0, want = strtod(edge[i], NULL);
+        CHECK_MSG(fl_scan_double(edge[i], strlen(edge[i]), &got) == FL_NUMBER_OK &&
+                      memcmp(&got, &want, sizeof got) == 0,
+                  "'%s'", edge[i]);
+    }
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_points_whitespace_tabs_and_comments),
              FL_TEST_CASE(test_points_crlf_blank_lines_and_trailing_spaces),
              FL_TEST_CASE(test_points_csv_header_commas_and_semicolons),
@@ -280,4 +332,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_points_whitespace_tabs_and_comments),
              FL_TEST_CASE(test_points_unterminated_buffer_not_overread),
              FL_TEST_CASE(test_points_round_trip_is_bit_exact),
              FL_TEST_CASE(test_points_mutated_inputs_fail_cleanly),
+             FL_TEST_CASE(test_scan_double_matches_strtod_bit_for_bit),
              FL_TEST_CASE(test_points_parse_time_is_linear))

@@ -5,6 +5,7 @@
  * kept. Rings must be closed as §3.1.6 requires (last position = first); the repeat is
  * dropped because fl_polygon rings are closed implicitly. Ring orientation is kept as given:
  * §3.1.6 asks parsers not to reject rings against the right-hand rule. */
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -55,6 +56,8 @@ static fl_status read_position(builder *b, size_t pos, double xy[2])
     for (size_t c = p->u.children.first; c != FL_JSON_NONE; c = node(b, c)->next, i++) {
         if (node(b, c)->type != FL_JSON_NUMBER)
             return fail_node(b, c, "a coordinate must be a number");
+        if (!isfinite(node(b, c)->u.number))
+            return fail_node(b, c, "coordinate is beyond the range of a double");
         if (i < 2) xy[i] = node(b, c)->u.number;
     }
     return FL_OK;

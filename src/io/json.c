@@ -1,6 +1,7 @@
 /* Recursive-descent JSON reader (RFC 8259 grammar). Values are appended to one node array as
  * they are met, so a parent is created before its children and the root is node 0; children
  * are linked by index (not pointer) because the array moves when it grows. */
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -239,11 +240,13 @@ static fl_status parse_number(parser *ps, size_t *index)
     }
     double v;
     fl_number_scan scan = fl_scan_double(s, (size_t)(p - s), &v);
-    if (scan != FL_NUMBER_OK) {
+    /* 1e999 is valid JSON; it becomes an infinity that the user of the value may refuse
+     * (a coordinate) or ignore (a property). */
+    if (scan == FL_NUMBER_NONFINITE) v = *s == '-' ? -HUGE_VAL : HUGE_VAL;
+    if (scan == FL_NUMBER_INVALID) {
         char q[40];
         fl_scan_quote(s, (size_t)(p - s), q, sizeof q);
-        return fail_at(ps, ps->line, "number %s is %s", q,
-                       scan == FL_NUMBER_NONFINITE ? "beyond the range of a double" : "too long");
+        return fail_at(ps, ps->line, "number %s is too long", q);
     }
     ps->p = p;
     fl_status st = new_node(ps, FL_JSON_NUMBER, index);

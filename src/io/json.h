@@ -29,7 +29,7 @@ typedef struct fl_json_node {
     size_t key_off; /* object members: the member name in the string pool */
     size_t key_len;
     union {
-        double number; /* FL_JSON_NUMBER */
+        double number; /* FL_JSON_NUMBER: +-HUGE_VAL beyond the double range */
         struct {
             size_t off, len;
         } string; /* FL_JSON_STRING: in the string pool */

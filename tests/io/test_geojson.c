@@ -108,7 +108,7 @@ static void test_json_numbers_follow_the_grammar(void)
         CHECK(i < 6 && doc.nodes[c].u.number == want[i]);
     CHECK_EQ_INT(i, 6);
     fl_json_free(&doc);
-    static const char *bad[] = {"-", "01", "1.", ".5", "1e", "+1", "0x10", "NaN", "1e999"};
+    static const char *bad[] = {"-", "01", "1.", ".5", "1e", "+1", "0x10", "NaN", "1e1x"};
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         char t[64];
         snprintf(t, sizeof t, "[\n%s]", bad[k]);
@@ -144,6 +144,9 @@ static void test_geojson_malformed_inputs_name_their_line(void)
         {"{\"type\": \"Polygon\", \"coordinates\": [[[0,0],[1,0],[0,0]]]}", 1,
          "2 distinct positions"},
         {"{\"type\": \"Point\", \"coordinates\": [0, 0]}", -1, "no Polygon or MultiPolygon"},
+        {"{\"type\": \"Polygon\", \"properties\": {\"big\": 1e999},\n"
+         "\"coordinates\": [[[0,0],[1,0],\n[-1e400,1],[0,0]]]}",
+         3, "beyond the range of a double"},
         {"{\"type\": \"Circle\",\n\"radius\": 1}", 1, "unknown GeoJSON type \"Circle\""},
         {"\n{\"type\": \"Polygon\"}", 2, "needs an array member \"coordinates\""},
         {"{\"coordinates\": []}", 1, "without a \"type\""},

@@ -115,6 +115,7 @@ static void test_json_numbers_follow_the_grammar(void)
         fl_status st = fl_json_parse("t.json", t, strlen(t), &doc, &err);
         CHECK_MSG(st == FL_ERR_INPUT && err.line == 2, "'%s' gave %d at line %ld", bad[k], (int)st,
                   err.line);
+        if (st == FL_OK) fl_json_free(&doc);
     }
 }
 

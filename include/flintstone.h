@@ -92,6 +92,15 @@ typedef struct fl_polygon {
 
 void fl_polygon_free(fl_polygon *polygon);
 
+/* Balls (weighted points): `count` balls, centre and weight interleaved in xyzw (4 doubles a
+ * ball); the weight is the squared radius (it may be negative or zero for weighted points). */
+typedef struct fl_balls {
+    size_t count;
+    double *xyzw;
+} fl_balls;
+
+void fl_balls_free(fl_balls *balls);
+
 /* ==== predicates ========================================================================== */
 /* (section owned by src/predicates; docs/predicates.md)
  *
@@ -220,6 +229,11 @@ fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error
  * opens in ParaView) or TetGen's .node/.ele pair (either name may be given; both files
  * "<stem>.node" and "<stem>.ele" are written, 0-based indices with "# firstnumber 0" noted).
  * Written atomically; on failure no target is changed. */
+/* Balls as text, one "x y z w" line each (.xyzw, .txt or .csv; '#' comments, an optional header
+ * line, separators as for points). Read and write like points; NaN/Inf rejected. */
+fl_status fl_read_balls(const char *path, fl_balls *out, fl_error *err);
+fl_status fl_write_balls(const char *path, const fl_balls *balls, fl_error *err);
+
 fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
                         const uint32_t *tet, size_t tet_count, fl_error *err);
 

@@ -67,13 +67,24 @@ static inline int dt3_is_infinite(const dt3_mesh *m, uint32_t t)
     return v[0] == DT3_INF || v[1] == DT3_INF || v[2] == DT3_INF || v[3] == DT3_INF;
 }
 
-/* Exact power (or in-sphere) test of point e against the positively oriented tetrahedron
- * a, b, c, d, with the tie broken by symbolic perturbation of the lifting (see dt3_predicates.c):
- * +1 when e is in conflict (inside the sphere / below the lifted hyperplane), -1 otherwise. Never
- * 0 for distinct points. Points are pointers to x, y, z (and w when weighted); ga..ge are the
- * caller's indices that fix the perturbation. */
-int dt3_power_sos(int weighted, const double *a, const double *b, const double *c, const double *d,
-                  const double *e, uint32_t ga, uint32_t gb, uint32_t gc, uint32_t gd, uint32_t ge);
+/* Is e in conflict with the positively oriented tetrahedron a, b, c, d: inside its circumsphere,
+ * or (weighted) is e's lifted point (p, |p|^2 - w) below the hyperplane of the lifted corners?
+ * +1 yes, -1 no; never 0. ga..ge are the caller's indices.
+ *
+ * Ties are broken by the predicates' perturbation of the lifting (fl_insphere_sos: the point
+ * with the higher index is infinitesimally heavier), never of the coordinates. That is a tiny
+ * weighting of the exact points, so the result is a regular triangulation of the exact points:
+ * no flat tetrahedron ever appears, and a point on a face shared by two tetrahedra gets the same
+ * answer from both (their lifted hyperplanes agree on the lifted face), which keeps every
+ * Bowyer-Watson cavity star-shaped on grids and cospherical input. Orientations stay unperturbed
+ * (fl_orient3d), as that family of predicates requires. */
+static inline int dt3_power_sos(int weighted, const double *a, const double *b, const double *c,
+                                const double *d, const double *e, uint32_t ga, uint32_t gb,
+                                uint32_t gc, uint32_t gd, uint32_t ge)
+{
+    return weighted ? fl_insphere_weighted_sos(a, b, c, d, e, ga, gb, gc, gd, ge)
+                    : fl_insphere_sos(a, b, c, d, e, ga, gb, gc, gd, ge);
+}
 
 /* Finds, for the new point q, a tetrahedron in conflict with it or the tetrahedron whose closed
  * region contains it: a finite tetrahedron containing q, or an infinite one whose hull face q

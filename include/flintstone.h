@@ -249,6 +249,98 @@ fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
 /* ==== delaunay ============================================================================ */
 /* (section owned by src/delaunay) */
 
+/* ---- 3D Delaunay triangulation ----
+ * Orientation convention (used by every 3D triangulation here): a tetrahedron (t0, t1, t2, t3) is
+ * positively oriented in the sense of fl_orient3d, i.e. fl_orient3d(p[t0], p[t1], p[t2], p[t3]) > 0:
+ * t3 lies below the plane of t0, t1, t2 seen counterclockwise from above (equivalently the
+ * determinant [t1-t0, t2-t0, t3-t0] is negative). The face opposite corner k, listed as
+ * (t1,t3,t2), (t0,t2,t3), (t0,t3,t1), (t0,t1,t2) for k = 0..3, is counterclockwise seen from
+ * outside the tetrahedron. Every output tetrahedron has nonzero volume, also on degenerate input. */
+
+/* Options of fl_dt3_build; all zero is a safe default. */
+typedef struct fl_dt3_options {
+    fl_progress_fn progress; /* may be NULL; called with stage "delaunay 3d" */
+    void *progress_user;
+    int want_circumcenters; /* nonzero: fill fl_dt3.circumcenters */
+} fl_dt3_options;
+
+/* A Delaunay triangulation of points in 3D. Vertex indices are indices of the input points. */
+typedef struct fl_dt3 {
+    size_t point_count;     /* n as given */
+    size_t unique_count;    /* distinct points; each is a vertex of the triangulation */
+    uint32_t *duplicate_of; /* point_count entries: i when point i is a vertex, else the index of
+                               the vertex with the same coordinates */
+    size_t tet_count;
+    uint32_t *tet; /* 4 point indices per tetrahedron, positively oriented (see above) */
+    uint32_t *adj; /* 4 per tetrahedron: the tetrahedron across the face opposite corner k, or
+                      UINT32_MAX when that face is on the convex hull */
+    size_t hull_face_count;
+    uint32_t *hull_faces;  /* 3 point indices per convex hull face, counterclockwise from outside */
+    double *circumcenters; /* 3 per tetrahedron when asked for, else NULL */
+} fl_dt3;
+
+/* Builds the Delaunay triangulation of the n points xyz[3n] (Bowyer-Watson insertion in a
+ * Hilbert BRIO order). Every decision is exact; ties (cospherical, coplanar points) are broken by
+ * a symbolic perturbation, so the result is always a valid triangulation of the convex hull in
+ * which no point lies strictly inside the circumsphere of any tetrahedron. Duplicate points are
+ * merged (duplicate_of). Fails with FL_ERR_INPUT on NaN/Inf coordinates, more than 2^32-3 points
+ * or fewer than 4 distinct points; FL_ERR_ALGORITHM when all points are coplanar or collinear (the
+ * message says which), or when cancelled; FL_ERR_NOMEM. On failure *out is zeroed. */
+fl_status fl_dt3_build(const double *xyz, size_t n, const fl_dt3_options *opt, fl_dt3 *out,
+                       fl_error *err);
+
+/* Checks dt against the points it was built from with the exact predicates: every tetrahedron is
+ * positively oriented, adjacency is symmetric, the hull is closed and locally convex, the Euler
+ * characteristic of the ball is 1, every distinct point is a vertex, and no point lies inside the
+ * circumsphere of a neighbouring tetrahedron (by the Delaunay lemma, this makes every sphere
+ * empty). FL_OK, or FL_ERR_ALGORITHM naming the first violation. */
+fl_status fl_dt3_verify(const double *xyz, const fl_dt3 *dt, fl_error *err);
+
+void fl_dt3_free(fl_dt3 *dt);
+
+/* ---- Regular (weighted Delaunay) triangulation in 3D ----
+ * A ball is (x, y, z, w) with w its weight, the squared radius (skin paper §2.1). The power
+ * distance of point p to the ball is |p - (x,y,z)|^2 - w. The regular triangulation is the
+ * projection of the lower convex hull of the lifted points (x, y, z, x^2+y^2+z^2-w); a ball whose
+ * lifted point lies above that hull is hidden (redundant) and is not a vertex. */
+
+/* Options of fl_rt3_build; all zero is a safe default. */
+typedef struct fl_rt3_options {
+    fl_progress_fn progress; /* may be NULL; called with stage "regular 3d" */
+    void *progress_user;
+    int want_ortho; /* nonzero: fill fl_rt3.ortho */
+} fl_rt3_options;
+
+typedef struct fl_rt3 {
+    size_t point_count;     /* n as given */
+    size_t vertex_count;    /* balls that are vertices of the triangulation */
+    uint32_t *duplicate_of; /* point_count entries: i unless ball i repeats ball j exactly (same
+                               centre and weight) and j is kept in its place */
+    size_t hidden_count;
+    uint32_t *hidden; /* ascending indices of the hidden balls (not duplicates): a ball at the
+                         centre of a heavier ball is hidden too */
+    size_t tet_count;
+    uint32_t *tet; /* as fl_dt3.tet */
+    uint32_t *adj; /* as fl_dt3.adj */
+    size_t hull_face_count;
+    uint32_t *hull_faces; /* as fl_dt3.hull_faces */
+    double *ortho;        /* 4 per tetrahedron when asked for: centre x, y, z and weight (squared
+                             radius, may be negative) of the ball orthogonal to its 4 balls */
+} fl_rt3;
+
+/* Builds the regular triangulation of the n balls xyzw[4n]. Same contract and failures as
+ * fl_dt3_build (weights must be finite; 4 distinct centres not in a plane are needed). With all
+ * weights equal it is the Delaunay triangulation of the centres. */
+fl_status fl_rt3_build(const double *xyzw, size_t n, const fl_rt3_options *opt, fl_rt3 *out,
+                       fl_error *err);
+
+/* Checks rt against its balls like fl_dt3_verify with the power test instead of the in-sphere
+ * test, and checks that every hidden ball is inside the hull and in conflict with no tetrahedron
+ * containing its centre. FL_OK or FL_ERR_ALGORITHM naming the first violation. */
+fl_status fl_rt3_verify(const double *xyzw, const fl_rt3 *rt, fl_error *err);
+
+void fl_rt3_free(fl_rt3 *rt);
+
 /* end of delaunay */
 
 

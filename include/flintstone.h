@@ -293,11 +293,14 @@ void fl_mesh_report_free(fl_mesh_report *report);
 typedef struct fl_polygon_report {
     size_t vertices, rings, polygons;
     size_t holes;                 /* rings that are not the first ring of their polygon */
-    int simple;                   /* 1 iff every ring has >= 3 vertices, no two edges of any
-                                   * rings meet except consecutive edges of one ring at their
-                                   * common vertex (decided exactly) */
-    size_t edge_intersections;    /* pairs of edges that meet where they should not (same
-                                   * definition; consecutive edges overlapping count once) */
+    int simple;                   /* 1 iff every ring has >= 3 vertices, no two consecutive
+                                   * vertices of a ring are equal, and no two edges of any rings
+                                   * meet except consecutive edges of one ring at their common
+                                   * vertex (decided exactly) */
+    size_t edge_intersections;    /* pairs of edges that meet where they should not: edges of
+                                   * different rings or non-consecutive edges of one ring with
+                                   * a common point; consecutive edges overlapping beyond their
+                                   * common vertex. Rings with < 3 vertices take no part. */
     int *ring_orientation;        /* per ring: +1 counter-clockwise, -1 clockwise, 0 when the
                                    * ring is degenerate; exact turn at the lowest-leftmost vertex,
                                    * which is the ring's orientation when the ring is simple */

@@ -21,6 +21,10 @@ fl_status fl_mesh_count_duplicate_vertices(const fl_mesh *mesh, size_t *count, f
 /* 1 iff triangle t has a repeated index or its three points are collinear (exact). */
 int fl_mesh_triangle_degenerate(const fl_mesh *mesh, size_t t);
 
+/* 1 iff proper triangles a != b of the mesh intersect beyond their shared vertices (one
+ * candidate pair of the self-intersection count; exposed for brute-force tests). */
+int fl_mesh_triangles_intersect(const fl_mesh *mesh, uint32_t a, uint32_t b);
+
 /* Counts pairs of triangles that intersect beyond their shared vertices (the definition of
  * fl_mesh_report.self_intersections). Degenerate triangles are skipped. */
 fl_status fl_mesh_count_self_intersections(const fl_mesh *mesh, fl_progress_fn progress, void *user,

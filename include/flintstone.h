@@ -243,6 +243,105 @@ fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
 /* ==== mesh ================================================================================ */
 /* (section owned by src/mesh) */
 
+/* Options of fl_mesh_check. All zero is the default: every check runs, no progress reports. */
+typedef struct fl_mesh_check_options {
+    int skip_self_intersections; /* nonzero: skip the (most expensive) self-intersection search */
+    fl_progress_fn progress;     /* optional; stages "topology", "self-intersections" */
+    void *progress_user;         /* passed to progress */
+} fl_mesh_check_options;
+
+/* What fl_mesh_check found. Counts refer to the mesh as given (no welding). Release with
+ * fl_mesh_report_free. Definitions:
+ *  - A vertex is *referenced* when some triangle uses it; unreferenced vertices are counted
+ *    in unreferenced_vertices and take part in nothing else (not in components, not in euler).
+ *  - Edges are the undirected vertex pairs {a,b} used by triangle sides. A triangle with a
+ *    repeated index contributes its sides as they are (a side {a,a} is an edge of its own).
+ *  - Components are maximal sets of triangles connected through shared vertices (the usual
+ *    MeshLab notion; two cubes touching at one vertex index are one component). Numbered in
+ *    order of their lowest triangle index. */
+typedef struct fl_mesh_report {
+    size_t vertices;              /* mesh->vertex_count */
+    size_t faces;                 /* mesh->triangle_count */
+    size_t edges;                 /* distinct undirected edges */
+    size_t unreferenced_vertices; /* vertices no triangle uses */
+    size_t boundary_edges;        /* edges with exactly one incident triangle */
+    size_t nonmanifold_edges;     /* edges with three or more incident triangles */
+    size_t nonmanifold_vertices;  /* referenced vertices whose triangles form more than one fan
+                                   * (edge-connected set around the vertex), e.g. two cones
+                                   * touching at their apex */
+    size_t misoriented_edges;     /* edges used twice in the same direction */
+    int closed;                   /* 1 iff faces > 0 and every edge has exactly two triangles */
+    int manifold;                 /* 1 iff no non-manifold edge and no non-manifold vertex */
+    int oriented;                 /* 1 iff no directed edge (a->b) is used by two triangles, i.e.
+                                   * every two-triangle edge is used once in each direction */
+    long long euler;              /* V - E + F over referenced vertices, edges and triangles */
+    size_t components;            /* number of components (0 for a mesh without triangles) */
+    long long *component_genus;   /* per component: (2 - (V-E+F)) / 2 when the component is
+                                   * closed, manifold and oriented, else -1 */
+    size_t *component_faces;      /* per component: its number of triangles */
+    long long genus;              /* sum of component_genus when none is -1, else -1 */
+    size_t degenerate_faces;      /* triangles with a repeated index or three collinear vertices
+                                   * (decided exactly: the cross product is the zero vector) */
+    size_t duplicate_vertices;    /* vertices whose coordinates equal (==, so -0 equals +0) those
+                                   * of a lower-indexed vertex */
+    int self_intersections_checked; /* 0 when skipped by the options */
+    size_t self_intersections;    /* pairs of non-degenerate triangles that intersect beyond the
+                                   * vertices they share, decided exactly on the closed
+                                   * triangles: sharing no vertex index, any common point counts
+                                   * (touching too); sharing one vertex, any common point other
+                                   * than it; sharing an edge, overlap beyond the edge (coplanar
+                                   * on the same side); sharing all three (duplicate faces),
+                                   * always. Degenerate triangles are not tested. */
+    double bbox[6];               /* min x, y, z, max x, y, z over all vertices (0 when none) */
+    double area;                  /* sum of triangle areas (floating point) */
+    double volume;                /* enclosed signed volume (divergence theorem), positive when
+                                   * triangles are counter-clockwise seen from outside; NaN
+                                   * unless the mesh is closed and oriented */
+} fl_mesh_report;
+
+/* Checks a triangle mesh: topology (edges, boundary, manifoldness, orientation, components,
+ * Euler characteristic, genus), degeneracies, duplicate vertices, self-intersections and the
+ * measures (bbox, area, volume). Runs in O(n log n) expected time for n triangles.
+ * `opt` may be NULL (defaults). On success *report is filled and must be released with
+ * fl_mesh_report_free. Errors: FL_ERR_INPUT for an index >= vertex_count or a non-finite
+ * coordinate, FL_ERR_INPUT when 3 * triangle_count >= 2^32 - 1, FL_ERR_NOMEM,
+ * FL_ERR_ALGORITHM "cancelled" when progress asked to stop. On failure *report is zeroed. */
+fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
+                        fl_mesh_report *report, fl_error *err);
+
+void fl_mesh_report_free(fl_mesh_report *report);
+
+/* What fl_polygon_check found. Release with fl_polygon_report_free. */
+typedef struct fl_polygon_report {
+    size_t vertices, rings, polygons;
+    size_t holes;                 /* rings that are not the first ring of their polygon */
+    int simple;                   /* 1 iff every ring has >= 3 vertices, no two consecutive
+                                   * vertices of a ring are equal, and no two edges of any rings
+                                   * meet except consecutive edges of one ring at their common
+                                   * vertex (decided exactly) */
+    size_t edge_intersections;    /* pairs of edges that meet where they should not: edges of
+                                   * different rings or non-consecutive edges of one ring with
+                                   * a common point; consecutive edges overlapping beyond their
+                                   * common vertex. Rings with < 3 vertices take no part. */
+    int *ring_orientation;        /* per ring: +1 counter-clockwise, -1 clockwise, 0 when the
+                                   * ring is degenerate; exact turn at the lowest-leftmost vertex,
+                                   * which is the ring's orientation when the ring is simple */
+    double *ring_area;            /* per ring: signed shoelace area (positive when ccw) */
+    int orientation;              /* +1: every outer ring ccw and every hole cw (GeoJSON,
+                                   * RFC 7946); -1: the reverse (ESRI shapefile); 0: mixed */
+    double area;                  /* sum over polygons of |outer| - sum |holes| */
+    int holes_inside;             /* 1: every hole lies strictly inside its outer ring; 0: some
+                                   * hole does not; -1: not decided because not simple */
+} fl_polygon_report;
+
+/* Checks planar polygons: simplicity, ring orientation, areas, holes inside their outer ring.
+ * O(n log n) for n vertices when few edges are near each other. On success *report must be
+ * released with fl_polygon_report_free. Errors: FL_ERR_INPUT for ring/polygon ranges that do
+ * not fit the arrays or non-finite coordinates; FL_ERR_NOMEM. On failure *report is zeroed. */
+fl_status fl_polygon_check(const fl_polygon *polygon, fl_polygon_report *report, fl_error *err);
+
+void fl_polygon_report_free(fl_polygon_report *report);
+
 /* end of mesh */
 
 

@@ -348,6 +348,63 @@ void fl_polygon_report_free(fl_polygon_report *report);
 /* ==== delaunay ============================================================================ */
 /* (section owned by src/delaunay) */
 
+/* -- 2D Delaunay triangulation (src/delaunay/dt2.c) --
+ * Every combinatorial decision is made with the exact predicates; ties among cocircular points
+ * are broken by symbolic perturbation (simulation of simplicity, by input index), so the result
+ * is one well-defined triangulation even for grids and points on a circle: all triangles are
+ * counterclockwise with nonzero area, they cover the convex hull of the points exactly, and no
+ * input point lies strictly inside any triangle's circumcircle. Points on the hull boundary
+ * (also collinear ones) are vertices. Expected O(n log n)-ish time, in practice linear after the
+ * spatial sort (see docs/delaunay.md). */
+
+/* Options; all zero is the default (no progress reports, no circumcenters). */
+typedef struct fl_dt2_options {
+    fl_progress_fn progress; /* called during insertion; may be NULL */
+    void *progress_user;
+    int want_circumcenters; /* nonzero: fill fl_dt2.circumcenters */
+} fl_dt2_options;
+
+/* A 2D Delaunay triangulation. Vertex indices refer to the input points; a point with an exact
+ * duplicate earlier in the input is represented by that earlier point (duplicate_of). Triangle
+ * t has corners tri[3t..3t+2] in counterclockwise order; adj[3t+k] is the triangle across the
+ * edge opposite corner k (the edge tri[3t+(k+1)%3] -> tri[3t+(k+2)%3]), or UINT32_MAX when that
+ * edge is on the convex hull. triangle_count = 2*unique_count - 2 - hull_count. */
+typedef struct fl_dt2 {
+    size_t point_count;     /* input points */
+    size_t unique_count;    /* distinct points (duplicates merged) */
+    uint32_t *duplicate_of; /* point_count entries: the first input point with identical
+                               coordinates (-0.0 == +0.0); itself when it is the first */
+    size_t triangle_count;
+    uint32_t *tri; /* 3 per triangle, counterclockwise */
+    uint32_t *adj; /* 3 per triangle: neighbour across the edge opposite corner k or UINT32_MAX */
+    size_t hull_count;
+    uint32_t *hull;        /* hull_count vertices of the convex hull, counterclockwise, including
+                              points in the relative interior of hull edges */
+    double *circumcenters; /* 2 per triangle when requested, else NULL (floating point; may be
+                              huge or infinite for nearly flat triangles) */
+} fl_dt2;
+
+/* Builds the Delaunay triangulation of the n points xy[2i], xy[2i+1]. `opt` may be NULL.
+ * On success *out holds the result (free with fl_dt2_free). Errors (then *out is zeroed):
+ * FL_ERR_USAGE for NULL buffers; FL_ERR_INPUT for NaN/Inf coordinates, fewer than 3 distinct
+ * points, or more than 2^29 points; FL_ERR_ALGORITHM when all distinct points are collinear
+ * (the triangulation would be 1-dimensional) or when the progress callback cancelled;
+ * FL_ERR_NOMEM. Memory: about 40 bytes per point at peak besides the output. */
+fl_status fl_dt2_build(const double *xy, size_t n, const fl_dt2_options *opt, fl_dt2 *out,
+                       fl_error *err);
+
+/* Checks `dt` against the points it was built from, with the exact predicates: index ranges
+ * and duplicate map, counterclockwise nonzero-area triangles, adjacency symmetry, the hull as
+ * the boundary cycle (convex, simple, counterclockwise), the Euler relation
+ * V - E + F = 1 with every distinct point a vertex, and the empty-circle property of every
+ * triangle (locally at each edge, exact and with symbolic perturbation; by Delaunay's lemma
+ * this is global). Returns FL_OK iff all hold, otherwise FL_ERR_ALGORITHM naming the first
+ * violation. O(n). */
+fl_status fl_dt2_verify(const double *xy, const fl_dt2 *dt, fl_error *err);
+
+/* Frees the arrays of dt and zeroes it; safe on a zeroed or already-freed struct. */
+void fl_dt2_free(fl_dt2 *dt);
+
 /* ---- 3D Delaunay triangulation ----
  * Orientation convention (used by every 3D triangulation here): a tetrahedron (t0, t1, t2, t3) is
  * positively oriented in the sense of fl_orient3d, i.e. fl_orient3d(p[t0], p[t1], p[t2], p[t3]) > 0:

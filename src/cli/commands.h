@@ -4,5 +4,6 @@
 
 int cmd_version(int argc, char **argv);
 int cmd_check(int argc, char **argv);
+int cmd_delaunay(int argc, char **argv);
 
 #endif

@@ -4,6 +4,7 @@
 
 int cmd_version(int argc, char **argv);
 int cmd_check(int argc, char **argv);
+int cmd_demo(int argc, char **argv);
 int cmd_delaunay(int argc, char **argv);
 
 #endif

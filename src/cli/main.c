@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 
 static const cli_command commands[] = {
+    {"check", "report topology, validity and measures of a mesh or polygon file", cmd_check},
     {"version", "print the version", cmd_version},
 };
 

@@ -197,19 +197,24 @@ int fl_insphere_weighted_sos(const double *a, const double *b, const double *c, 
  * offset (binary) and what is wrong. NaN/Inf coordinates and out-of-range indices are rejected
  * with FL_ERR_INPUT; a file that cannot be opened is FL_ERR_IO. On failure *out is zeroed.
  *
- * Points:   .xyz .xy .txt .csv (whitespace or commas, '#' comments, CRLF, optional header
+ * Points:   .xyz .xy .txt .csv (whitespace, ',' or ';', '#' comments, CRLF, optional header
  *           line; 2 or 3 numbers a line, the same on every line), .ply, .off, .obj (vertices).
+ *           Text numbers follow the C library's LC_NUMERIC ('.' in the "C" locale, which the
+ *           flintstone command never changes).
  * Meshes:   .off, .obj (polygons fan-triangulated; v, v/vt, v//vn, v/vt/vn; negative indices),
  *           .ply (ascii, binary little/big endian; any scalar types, properties in any order),
  *           .stl (ascii and binary; coincident vertices welded exactly).
  * Polygons: .xy (one ring a block; a blank line separates rings; each ring is its own polygon),
- *           .geojson (Polygon, MultiPolygon, Feature, FeatureCollection; holes kept). */
+ *           .geojson or .json (Polygon, MultiPolygon, Feature, FeatureCollection,
+ *           GeometryCollection; holes kept; rings must be closed; other geometries skipped).
+ * See docs/formats.md for every rule. */
 fl_status fl_read_points(const char *path, fl_points *out, fl_error *err);
 fl_status fl_read_mesh(const char *path, fl_mesh *out, fl_error *err);
 fl_status fl_read_polygon(const char *path, fl_polygon *out, fl_error *err);
 
 /* The same readers on a buffer already in memory (for embedding and fuzzing). `format` is an
- * extension without the dot ("ply", "stl", ...); `name` is used in error messages. */
+ * extension without the dot, any case ("ply", "PLY", ...); `name` is used in error messages.
+ * `data` need not be NUL-terminated. */
 fl_status fl_parse_points(const char *format, const char *name, const void *data, size_t size,
                           fl_points *out, fl_error *err);
 fl_status fl_parse_mesh(const char *format, const char *name, const void *data, size_t size,
@@ -218,8 +223,10 @@ fl_status fl_parse_polygon(const char *format, const char *name, const void *dat
                            fl_polygon *out, fl_error *err);
 
 /* Writers choose the format by extension and write atomically (temporary file, then rename):
- * on failure the target is untouched. Points: .xyz .xy .ply. Meshes: .off .obj .ply (binary
- * little endian) .stl (binary). Polygons: .xy .geojson .svg (a picture of the rings). */
+ * on failure the target is untouched. Points: .xyz .txt, .xy (2D only), .ply (2D gets z = 0).
+ * Meshes: .off .obj .ply (binary little endian) .stl (binary). Polygons: .xy (holes come back
+ * as separate polygons), .geojson/.json (exact, holes kept), .svg (a picture of the rings).
+ * Text coordinates are written with %.17g, so reading them back gives the same doubles. */
 fl_status fl_write_points(const char *path, const fl_points *points, fl_error *err);
 fl_status fl_write_mesh(const char *path, const fl_mesh *mesh, fl_error *err);
 fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error *err);

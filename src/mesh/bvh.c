@@ -6,37 +6,43 @@
 #include "core/core.h"
 #include "mesh/bvh.h"
 
+/* During the build the primitives' centres (inexact, but only used to choose splits)
+ * are permuted together with their ids in contiguous arrays, so each level of the top-down
+ * split streams through memory instead of chasing ids into the input boxes. */
 typedef struct build_ctx {
-    const double *boxes; /* input boxes, indexed by input position */
-    uint32_t *order;     /* input positions, permuted into leaf order */
+    double *cent;    /* 3 per entry, permuted with order */
+    uint32_t *order; /* input positions in leaf order */
     int leaf_size;
     fl_bvh *bvh;
 } build_ctx;
 
-static double centre(const build_ctx *c, uint32_t i, int axis)
+static void swap_entries(build_ctx *c, size_t i, size_t j)
 {
-    return c->boxes[6 * (size_t)i + axis] + c->boxes[6 * (size_t)i + 3 + axis];
+    uint32_t t = c->order[i];
+    c->order[i] = c->order[j], c->order[j] = t;
+    for (int k = 0; k < 3; k++) {
+        double x = c->cent[3 * i + k];
+        c->cent[3 * i + k] = c->cent[3 * j + k], c->cent[3 * j + k] = x;
+    }
 }
 
-/* Rearranges order[lo, hi) so that order[k] has the k-th smallest centre on `axis`
+/* Rearranges entries [lo, hi) so that entry k has the k-th smallest centre on `axis`
  * (quickselect with a median-of-three pivot; expected linear). */
-static void select_kth(const build_ctx *c, uint32_t *order, size_t lo, size_t hi, size_t k,
-                       int axis)
+static void select_kth(build_ctx *c, size_t lo, size_t hi, size_t k, int axis)
 {
+    const double *x = c->cent + axis;
     while (hi - lo > 2) {
         size_t mid = lo + (hi - lo) / 2;
-        double a = centre(c, order[lo], axis), b = centre(c, order[mid], axis),
-               d = centre(c, order[hi - 1], axis);
+        double a = x[3 * lo], b = x[3 * mid], d = x[3 * (hi - 1)];
         double pivot = a < b ? (b < d ? b : (a < d ? d : a)) : (a < d ? a : (b < d ? d : b));
         size_t i = lo, j = hi - 1;
         for (;;) { /* Hoare partition: equal keys split evenly, so duplicates stay linear */
-            while (centre(c, order[i], axis) < pivot)
+            while (x[3 * i] < pivot)
                 i++;
-            while (centre(c, order[j], axis) > pivot)
+            while (x[3 * j] > pivot)
                 j--;
             if (i >= j) break;
-            uint32_t t = order[i];
-            order[i] = order[j], order[j] = t;
+            swap_entries(c, i, j);
             i++, j--;
         }
         if (k <= j)
@@ -44,30 +50,26 @@ static void select_kth(const build_ctx *c, uint32_t *order, size_t lo, size_t hi
         else
             lo = j + 1;
     }
-    if (hi - lo == 2 && centre(c, order[lo], axis) > centre(c, order[lo + 1], axis)) {
-        uint32_t t = order[lo];
-        order[lo] = order[lo + 1], order[lo + 1] = t;
-    }
+    if (hi - lo == 2 && x[3 * lo] > x[3 * (lo + 1)]) swap_entries(c, lo, lo + 1);
 }
 
-static void node_box(const build_ctx *c, size_t lo, size_t hi, double *box, double *cbox)
+static int widest_centre_axis(const build_ctx *c, size_t lo, size_t hi)
 {
-    for (int k = 0; k < 3; k++)
-        box[k] = cbox[k] = HUGE_VAL, box[3 + k] = cbox[3 + k] = -HUGE_VAL;
-    for (size_t i = lo; i < hi; i++) {
-        const double *b = c->boxes + 6 * (size_t)c->order[i];
+    double mn[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, mx[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (size_t i = lo; i < hi; i++)
         for (int k = 0; k < 3; k++) {
-            double m = b[k] + b[3 + k];
-            if (b[k] < box[k]) box[k] = b[k];
-            if (b[3 + k] > box[3 + k]) box[3 + k] = b[3 + k];
-            if (m < cbox[k]) cbox[k] = m;
-            if (m > cbox[3 + k]) cbox[3 + k] = m;
+            double v = c->cent[3 * i + k];
+            mn[k] = v < mn[k] ? v : mn[k];
+            mx[k] = v > mx[k] ? v : mx[k];
         }
-    }
+    int axis = 0;
+    for (int k = 1; k < 3; k++)
+        if (mx[k] - mn[k] > mx[axis] - mn[axis]) axis = k;
+    return axis;
 }
 
-/* Builds the subtree of node `n` over order[lo, hi); iterative with an explicit stack whose
- * depth is bounded by the balanced tree's height. */
+/* Splits top-down with an explicit stack (depth bounded by the balanced tree's height);
+ * boxes are filled afterwards, bottom-up. */
 static void build_tree(build_ctx *c, size_t n_prims)
 {
     struct {
@@ -82,23 +84,54 @@ static void build_tree(build_ctx *c, size_t n_prims)
         top--;
         uint32_t n = stack[top].node;
         size_t lo = stack[top].lo, hi = stack[top].hi;
-        double cbox[6];
-        node_box(c, lo, hi, nodes[n].box, cbox);
         if (hi - lo <= (size_t)c->leaf_size) {
             nodes[n].left = 0, nodes[n].start = (uint32_t)lo, nodes[n].count = (uint32_t)(hi - lo);
             continue;
         }
-        int axis = 0;
-        for (int k = 1; k < 3; k++)
-            if (cbox[3 + k] - cbox[k] > cbox[3 + axis] - cbox[axis]) axis = k;
         size_t mid = lo + (hi - lo) / 2;
-        select_kth(c, c->order, lo, hi, mid, axis);
+        select_kth(c, lo, hi, mid, widest_centre_axis(c, lo, hi));
         nodes[n].left = (uint32_t)used, nodes[n].start = 0, nodes[n].count = 0;
         used += 2;
         stack[top].node = nodes[n].left, stack[top].lo = lo, stack[top].hi = mid, top++;
         stack[top].node = nodes[n].left + 1, stack[top].lo = mid, stack[top].hi = hi, top++;
     }
     c->bvh->node_count = used;
+}
+
+/* Float bounds that contain the double interval [lo, hi]. */
+static void round_out(const double *box, float *out)
+{
+    for (int k = 0; k < 3; k++) {
+        float lo = (float)box[k], hi = (float)box[3 + k];
+        if ((double)lo > box[k]) lo = nextafterf(lo, -HUGE_VALF);
+        if ((double)hi < box[3 + k]) hi = nextafterf(hi, HUGE_VALF);
+        out[k] = lo, out[3 + k] = hi;
+    }
+}
+
+static void merge_box(float *into, const float *b)
+{
+    for (int k = 0; k < 3; k++) {
+        into[k] = b[k] < into[k] ? b[k] : into[k];
+        into[3 + k] = b[3 + k] > into[3 + k] ? b[3 + k] : into[3 + k];
+    }
+}
+
+/* Children follow their parent in the array, so one reverse sweep sees them first. */
+static void fill_node_boxes(fl_bvh *bvh)
+{
+    for (size_t n = bvh->node_count; n-- > 0;) {
+        fl_bvh_node *node = &bvh->nodes[n];
+        const float *first =
+            node->count ? bvh->prim_box + 6 * (size_t)node->start : bvh->nodes[node->left].box;
+        memcpy(node->box, first, sizeof node->box);
+        if (node->count) {
+            for (uint32_t i = 1; i < node->count; i++)
+                merge_box(node->box, bvh->prim_box + 6 * ((size_t)node->start + i));
+        } else {
+            merge_box(node->box, bvh->nodes[node->left + 1].box);
+        }
+    }
 }
 
 fl_status fl_bvh_build(const double *boxes, const uint32_t *ids, size_t n, int leaf_size,
@@ -111,24 +144,32 @@ fl_status fl_bvh_build(const double *boxes, const uint32_t *ids, size_t n, int l
     if (n == 0) return FL_OK;
     if (leaf_size < 1) leaf_size = 1;
     if (leaf_size > 16) leaf_size = 16;
-    build_ctx c = {boxes, fl_alloc_array(n, sizeof(uint32_t)), leaf_size, bvh};
-    bvh->nodes =
-        fl_alloc_array(2 * n, sizeof *bvh->nodes); /* a binary tree with n leaves at most */
+    build_ctx c = {fl_alloc_array(n, 3 * sizeof(double)), fl_alloc_array(n, sizeof(uint32_t)),
+                   leaf_size, bvh};
+    bvh->nodes = fl_alloc_array(2 * n, sizeof *bvh->nodes); /* n leaves at most */
     bvh->prim = fl_alloc_array(n, sizeof *bvh->prim);
-    bvh->prim_box = fl_alloc_array(n, 6 * sizeof(double));
-    if (!c.order || !bvh->nodes || !bvh->prim || !bvh->prim_box) {
+    bvh->prim_box = fl_alloc_array(n, 6 * sizeof(float));
+    if (!c.cent || !c.order || !bvh->nodes || !bvh->prim || !bvh->prim_box) {
+        free(c.cent);
         free(c.order);
         fl_bvh_free(bvh);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory building the box tree");
     }
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = 0; i < n; i++) {
         c.order[i] = (uint32_t)i;
+        for (int k = 0; k < 3; k++) /* halves first: no overflow near DBL_MAX */
+            c.cent[3 * i + k] = 0.5 * boxes[6 * i + k] + 0.5 * boxes[6 * i + 3 + k];
+    }
     build_tree(&c, n);
     for (size_t i = 0; i < n; i++) {
         bvh->prim[i] = ids ? ids[c.order[i]] : c.order[i];
-        memcpy(bvh->prim_box + 6 * i, boxes + 6 * (size_t)c.order[i], 6 * sizeof(double));
+        round_out(boxes + 6 * (size_t)c.order[i], bvh->prim_box + 6 * i);
     }
     bvh->prim_count = n;
+    fill_node_boxes(bvh);
+    fl_bvh_node *shrunk = realloc(bvh->nodes, bvh->node_count * sizeof *shrunk);
+    if (shrunk) bvh->nodes = shrunk;
+    free(c.cent);
     free(c.order);
     return FL_OK;
 }
@@ -152,7 +193,7 @@ typedef struct pair_ctx {
     int stop;
 } pair_ctx;
 
-static int boxes_overlap(const double *a, const double *b)
+static int boxes_overlap(const float *a, const float *b)
 {
     return a[0] <= b[3] && b[0] <= a[3] && a[1] <= b[4] && b[1] <= a[4] && a[2] <= b[5] &&
            b[2] <= a[5];
@@ -172,7 +213,7 @@ static void leaf_pairs(pair_ctx *c, const fl_bvh_node *a, const fl_bvh_node *b)
     }
 }
 
-static double box_extent(const double *b)
+static float box_extent(const float *b)
 {
     return b[3] - b[0] + b[4] - b[1] + b[5] - b[2];
 }

@@ -1,8 +1,9 @@
 /* Axis-aligned bounding box hierarchy over primitives given by their boxes (internal; 2D users
  * pass z = 0). Built top-down by median split of the box centres along the widest axis, so
  * the tree is balanced (depth <= log2(n) + 1) whatever the input. Flat arrays; the children of
- * an internal node are adjacent. Boxes are copied exactly (no rounding), so a candidate pair
- * search never misses a pair whose closed boxes touch. */
+ * an internal node are adjacent and follow it. Boxes are stored as floats rounded outward, so
+ * they contain the exact double boxes: a candidate search never misses a pair whose closed
+ * boxes touch (it may report a few more, which the caller's exact test rejects). */
 #ifndef FL_MESH_BVH_H
 #define FL_MESH_BVH_H
 
@@ -12,7 +13,7 @@
 #include "flintstone.h"
 
 typedef struct fl_bvh_node {
-    double box[6];  /* min xyz, max xyz of everything below */
+    float box[6];   /* min xyz, max xyz of everything below (rounded outward) */
     uint32_t left;  /* internal: left child (right child is left + 1); leaf: 0 */
     uint32_t start; /* leaf: first entry in fl_bvh.prim */
     uint32_t count; /* leaf: number of primitives (>= 1); internal: 0 */
@@ -22,8 +23,8 @@ typedef struct fl_bvh {
     size_t node_count;
     fl_bvh_node *nodes; /* nodes[0] is the root (when node_count > 0) */
     size_t prim_count;
-    uint32_t *prim;   /* primitive ids in leaf order */
-    double *prim_box; /* 6 per entry of prim, in the same order */
+    uint32_t *prim;  /* primitive ids in leaf order */
+    float *prim_box; /* 6 per entry of prim, in the same order (rounded outward) */
 } fl_bvh;
 
 /* Builds the hierarchy over n boxes (6 doubles each: min xyz, max xyz; primitive i is

@@ -14,8 +14,11 @@ fl_status fl_mesh_topology(const fl_halfedges *he, fl_mesh_report *rep, fl_error
 /* Fills bbox, area and (when rep->closed && rep->oriented) volume, else volume = NaN. */
 void fl_mesh_measures(const fl_mesh *mesh, fl_mesh_report *rep);
 
-/* Number of vertices whose coordinates equal (==) those of a lower-indexed vertex; O(V)
- * expected with a hash table. */
+/* first[v] = the lowest index of a vertex whose coordinates equal (==) those of v (so
+ * first[v] == v for the first of each position). O(V) expected with a hash table. */
+fl_status fl_mesh_first_equal_vertex(const fl_mesh *mesh, size_t *first, fl_error *err);
+
+/* Number of vertices whose coordinates equal those of a lower-indexed vertex. */
 fl_status fl_mesh_count_duplicate_vertices(const fl_mesh *mesh, size_t *count, fl_error *err);
 
 /* 1 iff triangle t has a repeated index or its three points are collinear (exact). */

@@ -1,7 +1,6 @@
-/* Measures of a triangle mesh (floating-point constructions) and exact duplicate detection. */
+/* Measures of a triangle mesh (floating-point constructions). */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "core/core.h"
 #include "mesh/mesh_internal.h"
@@ -56,46 +55,4 @@ void fl_mesh_measures(const fl_mesh *mesh, fl_mesh_report *rep)
     }
     rep->area = area;
     rep->volume = (rep->closed && rep->oriented) ? six_volume / 6.0 : NAN;
-}
-
-/* Hash of the coordinate bits; +0.0 is added first so that -0 and +0 hash (and compare) the
- * same, as == says they are equal. */
-static uint64_t point_hash(const double *p)
-{
-    uint64_t h = 0x9E3779B97F4A7C15ULL;
-    for (int k = 0; k < 3; k++) {
-        double x = p[k] + 0.0;
-        uint64_t bits;
-        memcpy(&bits, &x, sizeof bits);
-        h ^= bits + 0x9E3779B97F4A7C15ULL + (h << 6) + (h >> 2);
-        h *= 0xBF58476D1CE4E5B9ULL;
-    }
-    return h ^ (h >> 31);
-}
-
-fl_status fl_mesh_count_duplicate_vertices(const fl_mesh *mesh, size_t *count, fl_error *err)
-{
-    size_t nv = mesh->vertex_count, cap = 16;
-    *count = 0;
-    while (cap < 2 * nv)
-        cap *= 2;
-    size_t *slot = fl_calloc_array(cap, sizeof *slot); /* vertex index + 1, 0 = empty */
-    if (!slot) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory finding duplicates");
-    for (size_t v = 0; v < nv; v++) {
-        const double *p = mesh->xyz + 3 * v;
-        size_t i = (size_t)point_hash(p) & (cap - 1);
-        for (;; i = (i + 1) & (cap - 1)) {
-            if (!slot[i]) {
-                slot[i] = v + 1;
-                break;
-            }
-            const double *q = mesh->xyz + 3 * (slot[i] - 1);
-            if (p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) {
-                (*count)++;
-                break;
-            }
-        }
-    }
-    free(slot);
-    return FL_OK;
 }

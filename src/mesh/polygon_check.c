@@ -11,6 +11,7 @@
 static fl_status validate_polygon(const fl_polygon *pg, fl_error *err)
 {
     if (!pg) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "no polygon given");
+    if (!pg->vertex_count && !pg->ring_count && !pg->polygon_count) return FL_OK; /* empty */
     if ((pg->vertex_count && !pg->xy) || !pg->ring_start || !pg->polygon_start)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "polygon arrays are NULL");
     if (pg->ring_start[0] != 0 || pg->ring_start[pg->ring_count] != pg->vertex_count)

@@ -268,6 +268,42 @@ static void test_unreferenced_and_duplicate_vertices_are_counted(void)
     fl_mesh_free(&c);
 }
 
+/* A triangle soup cube (three own vertices per triangle, as STL stores it): open and touching
+ * everywhere until welded, then the closed genus-0 cube with no self-intersections. */
+static void test_weld_turns_soup_cube_into_closed_cube(void)
+{
+    fl_mesh c = fx_cube(0, 0, 0, 1);
+    fl_mesh soup = fx_mesh_alloc(36, 12);
+    for (size_t i = 0; i < 36; i++) {
+        memcpy(soup.xyz + 3 * i, c.xyz + 3 * (size_t)c.tri[i], 3 * sizeof(double));
+        soup.tri[i] = (uint32_t)i;
+    }
+    soup.xyz[3 * 35] = -0.0; /* the same position */
+    fl_mesh_report r = check(&soup);
+    CHECK(!r.closed);
+    CHECK_EQ_INT(r.duplicate_vertices, 36 - 8);
+    CHECK_EQ_INT(r.components, 12);
+    CHECK(r.self_intersections > 0);
+    fl_mesh_report_free(&r);
+    fl_mesh w;
+    fl_error err;
+    CHECK_STATUS(fl_mesh_weld(&soup, &w, &err), FL_OK, &err);
+    CHECK_EQ_INT(w.vertex_count, 8);
+    CHECK_EQ_INT(w.triangle_count, 12);
+    r = check(&w);
+    CHECK(r.closed && r.manifold && r.oriented);
+    CHECK_EQ_INT(r.genus, 0);
+    CHECK_EQ_INT(r.self_intersections, 0);
+    CHECK_NEAR(r.volume, 1.0, 1e-15);
+    fl_mesh_report_free(&r);
+    fl_mesh_free(&w);
+    soup.tri[4] = 99;
+    CHECK_STATUS(fl_mesh_weld(&soup, &w, &err), FL_ERR_INPUT, &err);
+    CHECK(w.xyz == NULL);
+    fl_mesh_free(&soup);
+    fl_mesh_free(&c);
+}
+
 static void test_bad_input_is_rejected_and_report_zeroed(void)
 {
     fl_mesh m = fx_tetrahedron();
@@ -327,6 +363,7 @@ FL_TEST_MAIN(FL_TEST_CASE(test_tetrahedron_is_closed_oriented_genus_0),
              FL_TEST_CASE(test_flipped_face_breaks_orientation),
              FL_TEST_CASE(test_two_cubes_are_two_genus_0_components),
              FL_TEST_CASE(test_unreferenced_and_duplicate_vertices_are_counted),
+             FL_TEST_CASE(test_weld_turns_soup_cube_into_closed_cube),
              FL_TEST_CASE(test_bad_input_is_rejected_and_report_zeroed),
              FL_TEST_CASE(test_empty_mesh_has_no_components),
              FL_TEST_CASE(test_progress_can_cancel))

@@ -200,7 +200,18 @@ static void test_bad_ring_ranges_are_rejected(void)
     fl_polygon_free(&p);
 }
 
-FL_TEST_MAIN(FL_TEST_CASE(test_ccw_square_is_simple_with_area_1),
+static void test_empty_polygon_is_simple_with_zero_area(void)
+{
+    fl_polygon p = {0, NULL, 0, NULL, 0, NULL};
+    fl_polygon_report r = check(&p);
+    CHECK(r.simple);
+    CHECK_EQ_INT(r.rings, 0);
+    CHECK_NEAR(r.area, 0.0, 0);
+    fl_polygon_report_free(&r);
+}
+
+FL_TEST_MAIN(FL_TEST_CASE(test_empty_polygon_is_simple_with_zero_area),
+             FL_TEST_CASE(test_ccw_square_is_simple_with_area_1),
              FL_TEST_CASE(test_cw_square_is_clockwise), FL_TEST_CASE(test_bow_tie_is_not_simple),
              FL_TEST_CASE(test_square_with_hole_inside),
              FL_TEST_CASE(test_spike_folding_back_is_not_simple),

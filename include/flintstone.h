@@ -92,8 +92,99 @@ typedef struct fl_polygon {
 
 void fl_polygon_free(fl_polygon *polygon);
 
+/* Balls (weighted points): `count` balls, centre and weight interleaved in xyzw (4 doubles a
+ * ball); the weight is the squared radius (it may be negative or zero for weighted points). */
+typedef struct fl_balls {
+    size_t count;
+    double *xyzw;
+} fl_balls;
+
+void fl_balls_free(fl_balls *balls);
+
 /* ==== predicates ========================================================================== */
-/* (section owned by src/predicates) */
+/* (section owned by src/predicates; docs/predicates.md)
+ *
+ * Exact geometric predicates. Each returns the exact sign (-1, 0 or +1) of a determinant for
+ * every finite double input (huge, tiny and subnormal values included): a floating-point
+ * filter with a proven error bound decides almost every call, and an exact integer evaluation
+ * decides the rest. NaN or infinite inputs give an unspecified sign (but no crash). Points are
+ * arrays of 2 or 3 coordinates; weighted points carry the weight after the coordinates, (x, y, w)
+ * or (x, y, z, w), where w is a squared radius and the lifted coordinate is |p|^2 - w.
+ * All functions are pure and re-entrant; the exact stage uses about 20 KB of stack. */
+
+/* +1 if a, b, c are counterclockwise, -1 if clockwise, 0 if collinear:
+ * the sign of det[a - c; b - c]. */
+int fl_orient2d(const double *a, const double *b, const double *c);
+
+/* +1 if d lies below the plane through a, b, c, where "below" means that a, b, c appear
+ * counterclockwise seen from above; -1 if above; 0 if coplanar. The sign of
+ * det[a - d; b - d; c - d] (Shewchuk's convention; e.g. a=(0,0,0), b=(1,0,0), c=(0,1,0),
+ * d=(0,0,-1) gives +1). */
+int fl_orient3d(const double *a, const double *b, const double *c, const double *d);
+
+/* +1 if d lies inside the circle through a, b, c, -1 outside, 0 on it, when
+ * fl_orient2d(a, b, c) = +1; the sign flips when a, b, c are clockwise. Precisely the sign of
+ * det[a - d, |a - d|^2; b - d, |b - d|^2; c - d, |c - d|^2]. */
+int fl_incircle(const double *a, const double *b, const double *c, const double *d);
+
+/* +1 if e lies inside the sphere through a, b, c, d, -1 outside, 0 on it, when
+ * fl_orient3d(a, b, c, d) = +1 (the sign flips otherwise): the sign of
+ * det[a - e, |a - e|^2; ...; d - e, |d - e|^2]. */
+int fl_insphere(const double *a, const double *b, const double *c, const double *d,
+                const double *e);
+
+/* Power test on weighted points (x, y, w): +1 if d's lifted point lies below the plane of the
+ * lifted a, b, c when fl_orient2d(a, b, c) = +1, i.e. power(d, orthocircle(a, b, c)) < 0 and d
+ * is in conflict with triangle abc; the sign flips when a, b, c are clockwise. With equal
+ * weights it equals fl_incircle. */
+int fl_incircle_weighted(const double *a, const double *b, const double *c, const double *d);
+
+/* The same in 3D on weighted points (x, y, z, w), with fl_orient3d(a, b, c, d) = +1. */
+int fl_insphere_weighted(const double *a, const double *b, const double *c, const double *d,
+                         const double *e);
+
+/* Symbolically perturbed predicates (Simulation of Simplicity). Each point carries a global
+ * index (its position in the caller's input); the indices of one call must be pairwise
+ * distinct. The perturbation depends only on (coordinates, index), so all answers of one
+ * family are consistent with a single perturbed configuration. Every _sos function returns
+ * the unperturbed sign whenever that is nonzero, and for any argument order:
+ *  - swapping two arguments together with their indices flips the sign (the result depends
+ *    only on the set of (point, index) pairs and the parity of their order);
+ *
+ * Orientation (Edelsbrunner-Mucke): coordinate j (0-based) of the point with index i is moved
+ * by eps^(2^(i*dim + dim-1-j)) for an infinitesimal eps > 0: a lower index moves more, and
+ * within a point the last coordinate moves most. Never returns 0, even for coincident points.
+ */
+int fl_orient2d_sos(const double *a, const double *b, const double *c, uint32_t ia, uint32_t ib,
+                    uint32_t ic);
+int fl_orient3d_sos(const double *a, const double *b, const double *c, const double *d,
+                    uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id);
+
+/* In-circle / in-sphere (Devillers-Teillaud style, for Delaunay and regular triangulations):
+ * coordinates are NOT perturbed; only the lifted coordinate is, as if the point with index i
+ * had weight w + eps^(2^32 - i): a higher index is perturbed more (is "heavier"). The
+ * perturbed determinant is det + sum_k eps_k * cofactor_k, and each cofactor is, up to sign,
+ * the orientation of the other points, so a zero determinant is decided by the orientation
+ * of the remaining points after dropping the highest-index point, then the next, and so on.
+ * Consequences callers can rely on:
+ *  - the result is nonzero whenever fl_orient2d(a, b, c) != 0 (fl_orient3d(a, b, c, d) != 0),
+ *    and more generally unless all points are collinear (coplanar), when it is 0;
+ *  - a point d exactly on the circle through a, b, c (orient2d(a, b, c) = +1) with a higher
+ *    index than a, b and c is reported inside (+1): a later-inserted point on the circle is
+ *    in conflict;
+ *  - the orientation predicates are unperturbed in this family: use fl_orient2d/3d (not _sos)
+ *    alongside these, and never call them on flat triangles/tetrahedra.
+ * The weighted versions use the same rule on the weight (the lift is |p|^2 - w). */
+int fl_incircle_sos(const double *a, const double *b, const double *c, const double *d,
+                    uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id);
+int fl_insphere_sos(const double *a, const double *b, const double *c, const double *d,
+                    const double *e, uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id,
+                    uint32_t ie);
+int fl_incircle_weighted_sos(const double *a, const double *b, const double *c, const double *d,
+                             uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id);
+int fl_insphere_weighted_sos(const double *a, const double *b, const double *c, const double *d,
+                             const double *e, uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id,
+                             uint32_t ie);
 
 /* end of predicates */
 
@@ -133,6 +224,19 @@ fl_status fl_write_points(const char *path, const fl_points *points, fl_error *e
 fl_status fl_write_mesh(const char *path, const fl_mesh *mesh, fl_error *err);
 fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error *err);
 
+/* Writes a tetrahedral mesh: `point_count` points xyz[3i..3i+2] and `tet_count` tetrahedra of 4
+ * point indices each (all < point_count). By extension: .vtk (legacy ASCII unstructured grid,
+ * opens in ParaView) or TetGen's .node/.ele pair (either name may be given; both files
+ * "<stem>.node" and "<stem>.ele" are written, 0-based indices with "# firstnumber 0" noted).
+ * Written atomically; on failure no target is changed. */
+/* Balls as text, one "x y z w" line each (.xyzw, .txt or .csv; '#' comments, an optional header
+ * line, separators as for points). Read and write like points; NaN/Inf rejected. */
+fl_status fl_read_balls(const char *path, fl_balls *out, fl_error *err);
+fl_status fl_write_balls(const char *path, const fl_balls *balls, fl_error *err);
+
+fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
+                        const uint32_t *tet, size_t tet_count, fl_error *err);
+
 /* end of io */
 
 
@@ -145,7 +249,7 @@ fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error
 /* ==== delaunay ============================================================================ */
 /* (section owned by src/delaunay) */
 
-/* -- 2D Delaunay triangulation (src/delaunay/dt2.c) --
+/* ---- 2D Delaunay triangulation (src/delaunay/dt2.c) ----
  * Every combinatorial decision is made with the exact predicates; ties among cocircular points
  * are broken by symbolic perturbation (simulation of simplicity, by input index), so the result
  * is one well-defined triangulation even for grids and points on a circle: all triangles are
@@ -201,6 +305,98 @@ fl_status fl_dt2_verify(const double *xy, const fl_dt2 *dt, fl_error *err);
 
 /* Frees the arrays of dt and zeroes it; safe on a zeroed or already-freed struct. */
 void fl_dt2_free(fl_dt2 *dt);
+
+/* ---- 3D Delaunay triangulation ----
+ * Orientation convention (used by every 3D triangulation here): a tetrahedron (t0, t1, t2, t3) is
+ * positively oriented in the sense of fl_orient3d, i.e. fl_orient3d(p[t0], p[t1], p[t2], p[t3]) > 0:
+ * t3 lies below the plane of t0, t1, t2 seen counterclockwise from above (equivalently the
+ * determinant [t1-t0, t2-t0, t3-t0] is negative). The face opposite corner k, listed as
+ * (t1,t3,t2), (t0,t2,t3), (t0,t3,t1), (t0,t1,t2) for k = 0..3, is counterclockwise seen from
+ * outside the tetrahedron. Every output tetrahedron has nonzero volume, also on degenerate input. */
+
+/* Options of fl_dt3_build; all zero is a safe default. */
+typedef struct fl_dt3_options {
+    fl_progress_fn progress; /* may be NULL; called with stage "delaunay 3d" */
+    void *progress_user;
+    int want_circumcenters; /* nonzero: fill fl_dt3.circumcenters */
+} fl_dt3_options;
+
+/* A Delaunay triangulation of points in 3D. Vertex indices are indices of the input points. */
+typedef struct fl_dt3 {
+    size_t point_count;     /* n as given */
+    size_t unique_count;    /* distinct points; each is a vertex of the triangulation */
+    uint32_t *duplicate_of; /* point_count entries: i when point i is a vertex, else the index of
+                               the vertex with the same coordinates */
+    size_t tet_count;
+    uint32_t *tet; /* 4 point indices per tetrahedron, positively oriented (see above) */
+    uint32_t *adj; /* 4 per tetrahedron: the tetrahedron across the face opposite corner k, or
+                      UINT32_MAX when that face is on the convex hull */
+    size_t hull_face_count;
+    uint32_t *hull_faces;  /* 3 point indices per convex hull face, counterclockwise from outside */
+    double *circumcenters; /* 3 per tetrahedron when asked for, else NULL */
+} fl_dt3;
+
+/* Builds the Delaunay triangulation of the n points xyz[3n] (Bowyer-Watson insertion in a
+ * Hilbert BRIO order). Every decision is exact; ties (cospherical, coplanar points) are broken by
+ * a symbolic perturbation, so the result is always a valid triangulation of the convex hull in
+ * which no point lies strictly inside the circumsphere of any tetrahedron. Duplicate points are
+ * merged (duplicate_of). Fails with FL_ERR_INPUT on NaN/Inf coordinates, more than 2^32-3 points
+ * or fewer than 4 distinct points; FL_ERR_ALGORITHM when all points are coplanar or collinear (the
+ * message says which), or when cancelled; FL_ERR_NOMEM. On failure *out is zeroed. */
+fl_status fl_dt3_build(const double *xyz, size_t n, const fl_dt3_options *opt, fl_dt3 *out,
+                       fl_error *err);
+
+/* Checks dt against the points it was built from with the exact predicates: every tetrahedron is
+ * positively oriented, adjacency is symmetric, the hull is closed and locally convex, the Euler
+ * characteristic of the ball is 1, every distinct point is a vertex, and no point lies inside the
+ * circumsphere of a neighbouring tetrahedron (by the Delaunay lemma, this makes every sphere
+ * empty). FL_OK, or FL_ERR_ALGORITHM naming the first violation. */
+fl_status fl_dt3_verify(const double *xyz, const fl_dt3 *dt, fl_error *err);
+
+void fl_dt3_free(fl_dt3 *dt);
+
+/* ---- Regular (weighted Delaunay) triangulation in 3D ----
+ * A ball is (x, y, z, w) with w its weight, the squared radius (skin paper §2.1). The power
+ * distance of point p to the ball is |p - (x,y,z)|^2 - w. The regular triangulation is the
+ * projection of the lower convex hull of the lifted points (x, y, z, x^2+y^2+z^2-w); a ball whose
+ * lifted point lies above that hull is hidden (redundant) and is not a vertex. */
+
+/* Options of fl_rt3_build; all zero is a safe default. */
+typedef struct fl_rt3_options {
+    fl_progress_fn progress; /* may be NULL; called with stage "regular 3d" */
+    void *progress_user;
+    int want_ortho; /* nonzero: fill fl_rt3.ortho */
+} fl_rt3_options;
+
+typedef struct fl_rt3 {
+    size_t point_count;     /* n as given */
+    size_t vertex_count;    /* balls that are vertices of the triangulation */
+    uint32_t *duplicate_of; /* point_count entries: i unless ball i repeats ball j exactly (same
+                               centre and weight) and j is kept in its place */
+    size_t hidden_count;
+    uint32_t *hidden; /* ascending indices of the hidden balls (not duplicates): a ball at the
+                         centre of a heavier ball is hidden too */
+    size_t tet_count;
+    uint32_t *tet; /* as fl_dt3.tet */
+    uint32_t *adj; /* as fl_dt3.adj */
+    size_t hull_face_count;
+    uint32_t *hull_faces; /* as fl_dt3.hull_faces */
+    double *ortho;        /* 4 per tetrahedron when asked for: centre x, y, z and weight (squared
+                             radius, may be negative) of the ball orthogonal to its 4 balls */
+} fl_rt3;
+
+/* Builds the regular triangulation of the n balls xyzw[4n]. Same contract and failures as
+ * fl_dt3_build (weights must be finite; 4 distinct centres not in a plane are needed). With all
+ * weights equal it is the Delaunay triangulation of the centres. */
+fl_status fl_rt3_build(const double *xyzw, size_t n, const fl_rt3_options *opt, fl_rt3 *out,
+                       fl_error *err);
+
+/* Checks rt against its balls like fl_dt3_verify with the power test instead of the in-sphere
+ * test, and checks that every hidden ball is inside the hull and in conflict with no tetrahedron
+ * containing its centre. FL_OK or FL_ERR_ALGORITHM naming the first violation. */
+fl_status fl_rt3_verify(const double *xyzw, const fl_rt3 *rt, fl_error *err);
+
+void fl_rt3_free(fl_rt3 *rt);
 
 /* end of delaunay */
 

@@ -363,7 +363,7 @@ void fl_polygon_report_free(fl_polygon_report *report);
 /* ==== delaunay ============================================================================ */
 /* (section owned by src/delaunay) */
 
-/* -- 2D Delaunay triangulation (src/delaunay/dt2.c) --
+/* ---- 2D Delaunay triangulation (src/delaunay/dt2.c) ----
  * Every combinatorial decision is made with the exact predicates; ties among cocircular points
  * are broken by symbolic perturbation (simulation of simplicity, by input index), so the result
  * is one well-defined triangulation even for grids and points on a circle: all triangles are

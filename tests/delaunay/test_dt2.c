@@ -271,6 +271,154 @@ static void test_dt2_reports_progress_and_can_be_cancelled(void)
     free(xy);
 }
 
+/* In general position the Delaunay triangulation is unique: a permuted input must give the same
+ * triangles (as sets of points), although the order of insertion and the indices differ. */
+static int cmp_triple(const void *a, const void *b)
+{
+    return memcmp(a, b, 3 * sizeof(uint32_t));
+}
+
+static uint32_t *canonical_triangles(const fl_dt2 *dt, const uint32_t *rename)
+{
+    uint32_t *t = malloc(3 * dt->triangle_count * sizeof *t);
+    for (size_t i = 0; i < dt->triangle_count; i++) {
+        uint32_t v[3];
+        for (int k = 0; k < 3; k++)
+            v[k] = rename[dt->tri[3 * i + k]];
+        int m = v[0] < v[1] ? (v[0] < v[2] ? 0 : 2) : (v[1] < v[2] ? 1 : 2);
+        for (int k = 0; k < 3; k++)
+            t[3 * i + k] = v[(m + k) % 3]; /* rotate smallest first */
+    }
+    qsort(t, dt->triangle_count, 3 * sizeof *t, cmp_triple);
+    return t;
+}
+
+static void test_dt2_is_unique_for_points_in_general_position(void)
+{
+    size_t n = 5000;
+    double *xy = uniform_points(n, 31), *perm_xy = malloc(2 * n * sizeof *perm_xy);
+    uint32_t *perm = malloc(n * sizeof *perm), *identity = malloc(n * sizeof *identity);
+    unsigned long long seed = 37;
+    for (size_t i = 0; i < n; i++)
+        perm[i] = identity[i] = (uint32_t)i;
+    for (size_t i = n; i > 1; i--) {
+        size_t j = fl_test_rand_u64(&seed) % i;
+        uint32_t t = perm[i - 1];
+        perm[i - 1] = perm[j];
+        perm[j] = t;
+    }
+    for (size_t i = 0; i < n; i++) { /* perm_xy[i] = xy[perm[i]] */
+        perm_xy[2 * i] = xy[2 * (size_t)perm[i]];
+        perm_xy[2 * i + 1] = xy[2 * (size_t)perm[i] + 1];
+    }
+    fl_dt2 a, b;
+    fl_error err;
+    CHECK_STATUS(fl_dt2_build(xy, n, NULL, &a, &err), FL_OK, &err);
+    CHECK_STATUS(fl_dt2_build(perm_xy, n, NULL, &b, &err), FL_OK, &err);
+    CHECK_EQ_INT(a.triangle_count, b.triangle_count);
+    if (a.triangle_count == b.triangle_count) {
+        uint32_t *ta = canonical_triangles(&a, identity), *tb = canonical_triangles(&b, perm);
+        CHECK(memcmp(ta, tb, 3 * a.triangle_count * sizeof *ta) == 0);
+        free(ta);
+        free(tb);
+    }
+    fl_dt2_free(&a);
+    fl_dt2_free(&b);
+    free(perm);
+    free(identity);
+    free(perm_xy);
+    free(xy);
+}
+
+/* A grid scaled by 2^-1060 (subnormal spacing) and by 2^1000: exact predicates do not care. */
+static void test_dt2_grid_at_extreme_scales(void)
+{
+    int side = 12;
+    size_t n = (size_t)side * side;
+    double *xy = malloc(2 * n * sizeof *xy);
+    int scales[2] = {-1060, 1000};
+    for (int s = 0; s < 2; s++) {
+        for (size_t i = 0; i < n; i++) {
+            xy[2 * i] = ldexp((double)(i % side), scales[s]);
+            xy[2 * i + 1] = ldexp((double)(i / side), scales[s]);
+        }
+        tu_check_delaunay(s == 0 ? "subnormal grid" : "huge grid", xy, n, 1);
+    }
+    free(xy);
+}
+
+/* Many points on one line, a few off it: long chains of collinear hull and interior edges. */
+static void test_dt2_many_collinear_points_and_a_few_others(void)
+{
+    size_t n = 1003;
+    double *xy = malloc(2 * n * sizeof *xy);
+    for (size_t i = 0; i < 1000; i++) {
+        xy[2 * i] = (double)((i * 389) % 1000); /* a permutation of 0..999 */
+        xy[2 * i + 1] = 0.5 * xy[2 * i];
+    }
+    double extra[6] = {500, 400, 100, -300, 900, 10};
+    memcpy(xy + 2000, extra, sizeof extra);
+    tu_check_delaunay("line plus three", xy, n, 1);
+    free(xy);
+}
+
+/* Points on a circle computed with cos/sin: nearly, not exactly, cocircular, the classic way to
+ * break inexact incircle tests. */
+static void test_dt2_nearly_cocircular_points(void)
+{
+    size_t n = 2001;
+    double *xy = malloc(2 * n * sizeof *xy);
+    for (size_t i = 0; i + 1 < n; i++) {
+        double a = 6.283185307179586 * (double)((i * 7919) % 2000) / 2000.0;
+        xy[2 * i] = cos(a);
+        xy[2 * i + 1] = sin(a);
+    }
+    xy[2 * n - 2] = xy[2 * n - 1] = 0.0;
+    tu_check_delaunay("nearly cocircular", xy, n, 0);
+    tu_check_delaunay("nearly cocircular (brute)", xy + 2 * 1700, 301, 1);
+    free(xy);
+}
+
+/* Many small sets on a 5 x 5 lattice: duplicates, collinear runs and cocircular quadruples
+ * everywhere. Each set either triangulates correctly or is all collinear, and the collinear
+ * verdict agrees with a direct check of every triple. */
+static int all_collinear(const double *xy, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        for (size_t j = 0; j < n; j++)
+            for (size_t k = 0; k < n; k++)
+                if (fl_orient2d(xy + 2 * i, xy + 2 * j, xy + 2 * k) != 0) return 0;
+    return 1;
+}
+
+static void test_dt2_small_degenerate_lattice_sets(void)
+{
+    unsigned long long seed = 71;
+    double xy[2 * 40];
+    int built = 0;
+    for (int trial = 0; trial < 300; trial++) {
+        size_t n = 3 + (size_t)(fl_test_rand_u64(&seed) % 38);
+        int span = trial % 3 == 0 ? 2 : 5;
+        for (size_t i = 0; i < 2 * n; i++)
+            xy[i] = (double)(fl_test_rand_u64(&seed) % span);
+        fl_dt2 dt;
+        fl_error err;
+        fl_status st = fl_dt2_build(xy, n, NULL, &dt, &err);
+        if (st == FL_OK) {
+            built++;
+            CHECK_STATUS(fl_dt2_verify(xy, &dt, &err), FL_OK, &err);
+            CHECK(tu_hull_matches(xy, &dt));
+            CHECK_EQ_INT(tu_empty_circle_violations(xy, &dt), 0);
+            CHECK(!all_collinear(xy, n));
+            fl_dt2_free(&dt);
+        } else {
+            CHECK_MSG(st == FL_ERR_INPUT || (st == FL_ERR_ALGORITHM && all_collinear(xy, n)),
+                      "trial %d: %s", trial, err.message);
+        }
+    }
+    CHECK(built > 200);
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_dt2_random_uniform_points_are_delaunay),
              FL_TEST_CASE(test_dt2_gaussian_clusters_are_delaunay),
              FL_TEST_CASE(test_dt2_empty_circle_on_integer_grid),
@@ -281,4 +429,9 @@ FL_TEST_MAIN(FL_TEST_CASE(test_dt2_random_uniform_points_are_delaunay),
              FL_TEST_CASE(test_dt2_collinear_points_plus_one),
              FL_TEST_CASE(test_dt2_rejects_bad_input),
              FL_TEST_CASE(test_dt2_circumcenters_are_equidistant_from_corners),
-             FL_TEST_CASE(test_dt2_reports_progress_and_can_be_cancelled))
+             FL_TEST_CASE(test_dt2_reports_progress_and_can_be_cancelled),
+             FL_TEST_CASE(test_dt2_is_unique_for_points_in_general_position),
+             FL_TEST_CASE(test_dt2_grid_at_extreme_scales),
+             FL_TEST_CASE(test_dt2_many_collinear_points_and_a_few_others),
+             FL_TEST_CASE(test_dt2_nearly_cocircular_points),
+             FL_TEST_CASE(test_dt2_small_degenerate_lattice_sets))

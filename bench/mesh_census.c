@@ -5,7 +5,8 @@
  *   <file> vertices=V triangles=T closed=yes|no oriented=yes|no boundary_edges=B
  *          nonmanifold_edges=N degenerate=D euler=X
  *
- * closed: every edge is shared by exactly two triangles and no triangle repeats a vertex.
+ * closed: every edge is shared by exactly two triangles and no triangle repeats a vertex
+ * ("no-triangles" for a file that holds only vertices, i.e. a point set).
  * oriented: closed, and the two triangles of every edge walk it in opposite directions.
  * euler: V' - E + T over the V' vertices that triangles use (2 - 2g for a closed connected
  * orientable surface of genus g). A file the reader rejects gets "error: <message>". */
@@ -87,9 +88,12 @@ int main(int argc, char **argv)
         } else {
             int closed = mesh.triangle_count > 0 && c.boundary == 0 && c.nonmanifold == 0 &&
                          c.degenerate == 0;
+            const char *closed_word = mesh.triangle_count == 0 ? "no-triangles"
+                                      : closed                 ? "yes"
+                                                               : "no";
             printf("%s vertices=%zu triangles=%zu closed=%s oriented=%s boundary_edges=%zu "
                    "nonmanifold_edges=%zu degenerate=%zu euler=%lld\n",
-                   argv[i], mesh.vertex_count, mesh.triangle_count, closed ? "yes" : "no",
+                   argv[i], mesh.vertex_count, mesh.triangle_count, closed_word,
                    closed && c.misoriented == 0 ? "yes" : "no", c.boundary, c.nonmanifold,
                    c.degenerate,
                    (long long)c.used_vertices - (long long)c.edges +

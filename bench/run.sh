@@ -13,12 +13,16 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 bench=$root/bench
 build=${FL_BENCH_BUILD:-$root/build-bench}
 
-# Debian packages the bench needs: the build, the peers, node for the data conversion.
-packages=(gcc make cmake libassimp-dev nodejs npm)
+# Debian packages the bench needs: the build, the peers, node for the data conversion. Node and
+# npm are looked for as commands, since some machines have them from another nodejs package
+# that bundles npm.
+packages=(gcc make cmake libassimp-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+command -v node >/dev/null || missing+=(nodejs)
+command -v npm >/dev/null || missing+=(npm)
 if [ ${#missing[@]} -gt 0 ]; then
   echo "run: installing ${missing[*]}" >&2
   SUDO=$([ "$(id -u)" -eq 0 ] || echo sudo)
@@ -55,7 +59,8 @@ for w in "${workloads[@]}"; do
 done
 
 commit=$(git -C "$root" rev-parse --short HEAD)
-git -C "$root" diff --quiet HEAD -- src include bench 2>/dev/null || commit="$commit (+ uncommitted changes)"
+git -C "$root" diff --quiet HEAD -- src include bench ':!bench/RESULTS.md' 2>/dev/null ||
+  commit="$commit (+ uncommitted changes)"
 cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
 {
   echo "# Benchmark results"
@@ -76,6 +81,17 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
   awk -F'|' '
     $1 == "ROW"   { printf "| %s | %.4f | %s | %.4f | **%.2f** | %s |\n", $2, $3, $4, $5, $3 / $5, $6 }
     $1 == "ERROR" { printf "| %s | failed | | | | %s |\n", $2, $3 }' "$rows"
+  echo
+  echo "In words (a ratio within 10% of 1 is noise on this machine):"
+  echo
+  awk -F'|' '$1 == "ROW" {
+    r = $3 / $5
+    if (r > 1.1)       printf "- %s: **ours is %.1fx slower than %s**\n", $2, r, $4
+    else if (r < 0.91) printf "- %s: ours is %.1fx faster than %s\n", $2, 1 / r, $4
+    else               printf "- %s: ours and %s are on par (ratio %.2f)\n", $2, $4, r
+  }' "$rows"
+  echo
+  echo "Where the time goes when we are slower: see \"Findings\" in docs/benchmarks.md."
 } >"$results"
 echo "run: wrote $results" >&2
 cat "$results"

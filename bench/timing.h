@@ -7,7 +7,9 @@
  * line that the scripts in bench/workloads/ parse:
  *
  *   RESULT reader=<name> file=<path> reps=<n> median_s=<s> min_s=<s> max_s=<s>
- *          vertices=<n> triangles=<n> maxrss_kb=<kb>
+ *          cpu_median_s=<s> vertices=<n> triangles=<n> maxrss_kb=<kb>
+ *
+ * median/min/max are wall-clock seconds; cpu_median_s is the median CPU time of the process.
  */
 #ifndef FL_BENCH_TIMING_H
 #define FL_BENCH_TIMING_H

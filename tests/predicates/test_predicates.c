@@ -246,27 +246,27 @@ static void run_generator(const char *name, generator g, int count, int expect_z
 
 static void test_exact_sign_on_uniform_random_points(void)
 {
-    run_generator("uniform", gen_uniform, 3000, 0);
+    run_generator("uniform", gen_uniform, 2000, 0);
 }
 
 static void test_exact_sign_on_ulp_perturbed_integer_grid(void)
 {
-    run_generator("grid+ulp", gen_grid_ulp, 4000, 0);
+    run_generator("grid+ulp", gen_grid_ulp, 2500, 0);
 }
 
 static void test_exact_sign_on_exactly_degenerate_points(void)
 {
-    run_generator("degenerate", gen_degenerate, 3000, 1);
+    run_generator("degenerate", gen_degenerate, 2000, 1);
 }
 
 static void test_exact_sign_on_nearly_degenerate_points(void)
 {
-    run_generator("near", gen_near, 4000, 0);
+    run_generator("near", gen_near, 2500, 0);
 }
 
 static void test_exact_sign_on_values_of_any_exponent(void)
 {
-    run_generator("wild exponent", gen_wild_exponents, 3000, 0);
+    run_generator("wild exponent", gen_wild_exponents, 2000, 0);
 }
 
 /* The documented conventions on configurations whose answer is known in closed form. */

@@ -13,10 +13,14 @@ static fl_status cancelled(fl_error *err)
 }
 
 static fl_status add_if_accepted(const double *coords, size_t n, int dim, const fl_gamma_params *p,
-                                 const uint32_t *s, graph_builder *b, fl_error *err)
+                                 gamma_part part, const uint32_t *s, graph_builder *b,
+                                 fl_error *err)
 {
     gamma_value v;
     if (!gamma_simplex_value_all(coords, n, dim, s, &v) || !gamma_params_accept(p, &v))
+        return FL_OK;
+    if ((part == GAMMA_DELAUNAY_PART && !v.delaunay) ||
+        (part == GAMMA_NON_DELAUNAY_PART && v.delaunay))
         return FL_OK;
     if (graph_builder_add(b, s, v.c0, v.c1))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory collecting simplices");
@@ -24,7 +28,8 @@ static fl_status add_if_accepted(const double *coords, size_t n, int dim, const 
 }
 
 fl_status gamma_brute_force(const double *coords, size_t n, int dim, const fl_gamma_params *p,
-                            const fl_graph_options *opt, graph_builder *b, fl_error *err)
+                            gamma_part part, const fl_graph_options *opt, graph_builder *b,
+                            fl_error *err)
 {
     fl_progress_fn progress = opt ? opt->progress : NULL;
     void *user = opt ? opt->progress_user : NULL;
@@ -37,7 +42,7 @@ fl_status gamma_brute_force(const double *coords, size_t n, int dim, const fl_ga
             s[1] = (uint32_t)j;
             for (size_t k = dim == 3 ? j + 1 : n; k < n || dim == 2; k++) {
                 if (dim == 3) s[2] = (uint32_t)k;
-                fl_status st = add_if_accepted(coords, n, dim, p, s, b, err);
+                fl_status st = add_if_accepted(coords, n, dim, p, part, s, b, err);
                 if (st != FL_OK) return st;
                 if (dim == 2) break;
             }
@@ -53,6 +58,29 @@ static double c1_floor(const fl_gamma_params *p)
     return p->range ? p->c[2] : p->c[1];
 }
 
+/* Can a simplex with an empty ball (c1' >= 0) be accepted? */
+static int accepts_delaunay(const fl_gamma_params *p)
+{
+    return !p->range || p->c[3] >= 0;
+}
+
+/* The simplices with an empty ball: a subset of the Delaunay triangulation's (Thm. 3.2). */
+static fl_status delaunay_part(const double *coords, size_t n, int dim, const fl_gamma_params *p,
+                               const fl_graph_options *opt, graph_builder *b, fl_error *err)
+{
+    return gamma_brute_force(coords, n, dim, p, GAMMA_DELAUNAY_PART, opt, b, err);
+}
+
+/* The simplices without an empty ball (c1' < 0). */
+static fl_status non_delaunay_part(const double *coords, size_t n, int dim,
+                                   const fl_gamma_params *p, const fl_graph_options *opt,
+                                   graph_builder *b, fl_error *err)
+{
+    double kappa = -c1_floor(p);
+    if (dim == 2 && kappa < 1) return gamma_lens_edges(coords, n, p, kappa, opt, b, err);
+    return gamma_brute_force(coords, n, dim, p, GAMMA_NON_DELAUNAY_PART, opt, b, err);
+}
+
 fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma_params *params,
                          const fl_graph_options *opt, fl_graph *out, fl_error *err)
 {
@@ -63,9 +91,13 @@ fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma
     if (st != FL_OK) return st;
     graph_builder b;
     graph_builder_init(&b, dim, dim, n);
-    int brute = opt && opt->method == FL_GAMMA_BRUTE_FORCE;
-    (void)c1_floor;
-    if (brute || 1) st = gamma_brute_force(coords, n, dim, params, opt, &b, err);
+    if (opt && opt->method == FL_GAMMA_BRUTE_FORCE) {
+        st = gamma_brute_force(coords, n, dim, params, GAMMA_ALL, opt, &b, err);
+    } else {
+        if (accepts_delaunay(params)) st = delaunay_part(coords, n, dim, params, opt, &b, err);
+        if (st == FL_OK && c1_floor(params) < 0)
+            st = non_delaunay_part(coords, n, dim, params, opt, &b, err);
+    }
     if (st != FL_OK) {
         graph_builder_free(&b);
         return st;

@@ -103,13 +103,41 @@ void graph_builder_free(graph_builder *b);
 fl_status graph_check_points(const double *coords, size_t n, int dim, fl_error *err);
 fl_status gamma_check_params(const fl_gamma_params *p, fl_error *err);
 
+/* Which simplices a builder should report. */
+typedef enum gamma_part { GAMMA_ALL, GAMMA_DELAUNAY_PART, GAMMA_NON_DELAUNAY_PART } gamma_part;
+
 /* Theorem 3.1: every k-subset against every point. */
 fl_status gamma_brute_force(const double *coords, size_t n, int dim, const fl_gamma_params *p,
-                            const fl_graph_options *opt, graph_builder *b, fl_error *err);
+                            gamma_part part, const fl_graph_options *opt, graph_builder *b,
+                            fl_error *err);
 
 /* Output-sensitive search for the non-Delaunay edges (c1' < 0) of a 2D γ-graph whose
  * parameters require c1' >= -kappa, kappa < 1 (see gamma_lens.c). */
 fl_status gamma_lens_edges(const double *xy, size_t n, const fl_gamma_params *p, double kappa,
                            const fl_graph_options *opt, graph_builder *b, fl_error *err);
+
+/* ---- a uniform bucket grid for range queries (graph_grid.c) ---- */
+
+typedef struct graph_grid {
+    int dim;
+    const double *coords;
+    size_t n;
+    double lo[3], cell; /* cell edge length */
+    size_t res[3];      /* cells per axis */
+    size_t *start;      /* CSR: cell c holds items[start[c] .. start[c+1]-1] */
+    uint32_t *items;
+} graph_grid;
+
+/* About two points a cell. Returns FL_ERR_NOMEM on allocation failure. */
+fl_status graph_grid_build(graph_grid *g, const double *coords, size_t n, int dim, fl_error *err);
+void graph_grid_free(graph_grid *g);
+/* Appends to out (uint32_t) every point of the cells meeting the box [lo,hi]: a superset of the
+ * points in the box. Returns -1 on allocation failure. */
+int graph_grid_box(const graph_grid *g, const double *lo, const double *hi, fl_vec *out);
+/* Appends the points of the cells at Chebyshev cell distance exactly `ring` from the cell of p;
+ * every point at Euclidean distance < ring * cell from p lies in rings 0..ring. Returns the
+ * number appended, or -1 on allocation failure; 0 with *beyond set once the ring leaves the grid.
+ */
+long graph_grid_ring(const graph_grid *g, const double *p, size_t ring, fl_vec *out, int *beyond);
 
 #endif /* FL_GAMMA_INTERNAL_H */

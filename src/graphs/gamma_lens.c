@@ -12,10 +12,11 @@
  *    p is inside that cone and blocks vw. So only the points of a sector within twice the
  *    sector's nearest distance are candidates, at both ends of the edge (a Yao-graph filter).
  * 2. A candidate's witnesses (gamma_simplex.c) lie on balls B(t) with |t| <= T = sqrt(rho^2-r^2)
- *    when c1' >= -kappa, and every point that could beat them lies in B(T) ∪ B(-T), within
- *    T + rho of m. The summary over the grid cells meeting that box is therefore the global one
- *    whenever it reports a non-Delaunay edge with c1' >= -kappa; if it reports anything else, the
- *    edge is either Delaunay (built elsewhere) or has c1' < -kappa (rejected either way).
+ *    when c1' >= -kappa, and every point that could beat a witness lies inside its ball. So the
+ *    summary is gathered from the grid cells around the smallest ball and then around the
+ *    witnesses' balls (capped at B(+-T)); it is the global one whenever it reports a
+ *    non-Delaunay edge with c1' >= -kappa, and otherwise the edge is Delaunay (built elsewhere)
+ *    or has c1' < -kappa (rejected either way). See verify_edge.
  *
  * On uniform points each vertex keeps O(1) candidates a sector, so the work is
  * O(N * K * points-per-lens) with K = O(1/theta) sectors; no O(N^3) step remains. */
@@ -106,25 +107,59 @@ static int passes_filter(const lens_ctx *c, uint32_t v, uint32_t w)
     return d <= 2 * m * (1 + LENS_SLACK);
 }
 
+/* Adds to the summary every point of the grid cells meeting the bounding box of the ball B(t)
+ * (t = 0: the smallest ball). Repeats are harmless: a point never beats itself. */
+static int add_ball(lens_ctx *c, const gamma_frame *f, double t, fl_vec *local, gamma_summary *s)
+{
+    double radius = hypot(f->r, t) * (1 + LENS_SLACK), lo[2], hi[2];
+    for (int k = 0; k < 2; k++) {
+        double centre = f->center[k] + t * f->normal[k];
+        double slack = LENS_SLACK * (fabs(centre) + radius);
+        lo[k] = centre - radius - slack;
+        hi[k] = centre + radius + slack;
+    }
+    local->count = 0;
+    if (graph_grid_box(&c->grid, lo, hi, local)) return -1;
+    for (size_t i = 0; i < local->count; i++)
+        gamma_summary_add(s, f, c->xy, ((uint32_t *)local->data)[i]);
+    return 0;
+}
+
+/* The centre offset tau of a witness's ball, in the frame's floating construction. */
+static double witness_tau(const lens_ctx *c, const gamma_frame *f, uint32_t w)
+{
+    const double *p = c->xy + 2 * (size_t)w;
+    double d[2] = {p[0] - f->center[0], p[1] - f->center[1]};
+    double h = d[0] * f->normal[0] + d[1] * f->normal[1];
+    return (d[0] * d[0] + d[1] * d[1] - f->r * f->r) / (2 * h);
+}
+
+/* The summary of edge e is gathered in two rounds. Round one: the smallest ball (which holds
+ * every point on the open edge) and, for a side without a point there, the extreme ball B(+-T)
+ * of an edge with c1' >= -kappa. Round two: the balls of the witnesses found, capped at B(+-T).
+ * A point beating a round-two witness lies in that witness's ball (on its side the balls are
+ * nested in t), so the final witnesses are the global ones whenever their balls stay within
+ * B(+-T), which is exactly when the edge can have c1' >= -kappa. */
 static int verify_edge(lens_ctx *c, const fl_gamma_params *p, double kappa, const uint32_t *e,
                        fl_vec *local, graph_builder *b)
 {
     gamma_frame f;
     if (!gamma_frame_init(&f, c->xy, 2, e)) return 0;
-    double g = 1 / (1 - kappa);
-    double rho = f.r * g, t = f.r * sqrt(g * g - 1);
-    double reach = (rho + t) * (1 + LENS_SLACK), lo[2], hi[2];
-    for (int k = 0; k < 2; k++) {
-        lo[k] = f.center[k] - reach;
-        hi[k] = f.center[k] + reach;
-    }
-    local->count = 0;
-    if (graph_grid_box(&c->grid, lo, hi, local)) return -1;
+    double g = 1 / (1 - kappa), t_max = f.r * sqrt(g * g - 1);
     gamma_summary s;
     gamma_summary_init(&s);
-    for (size_t i = 0; i < local->count; i++)
-        gamma_summary_add(&s, &f, c->xy, ((uint32_t *)local->data)[i]);
+    if (add_ball(c, &f, 0, local, &s)) return -1;
+    if (s.blocked_all) return 0;
+    if (s.up == GAMMA_NONE && add_ball(c, &f, t_max, local, &s)) return -1;
+    if (s.lo == GAMMA_NONE && add_ball(c, &f, -t_max, local, &s)) return -1;
+    if (s.up == GAMMA_NONE || s.lo == GAMMA_NONE) return 0; /* Delaunay or c1' < -kappa */
     gamma_value val;
+    gamma_summary_value(&s, &f, c->xy, &val);
+    /* More points only widen the interval [tau(up), tau(lo)] of a non-Delaunay edge, so its
+     * |c1'| can only grow: an early c1' < -kappa is final. */
+    if (!val.delaunay && val.c1 < -kappa) return 0;
+    double tu = fmin(witness_tau(c, &f, s.up), t_max), tl = fmax(witness_tau(c, &f, s.lo), -t_max);
+    if (add_ball(c, &f, tu, local, &s) || add_ball(c, &f, tl, local, &s)) return -1;
     gamma_summary_value(&s, &f, c->xy, &val);
     if (val.never || val.delaunay || val.c1 < -kappa || !gamma_params_accept(p, &val)) return 0;
     return graph_builder_add(b, e, val.c0, val.c1);

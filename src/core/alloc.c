@@ -101,3 +101,10 @@ void fl_polygon_free(fl_polygon *polygon)
     free(polygon->polygon_start);
     memset(polygon, 0, sizeof *polygon);
 }
+
+void fl_balls_free(fl_balls *balls)
+{
+    if (!balls) return;
+    free(balls->xyzw);
+    memset(balls, 0, sizeof *balls);
+}

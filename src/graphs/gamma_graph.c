@@ -68,7 +68,7 @@ static int accepts_delaunay(const fl_gamma_params *p)
 static fl_status delaunay_part(const double *coords, size_t n, int dim, const fl_gamma_params *p,
                                const fl_graph_options *opt, graph_builder *b, fl_error *err)
 {
-    return gamma_brute_force(coords, n, dim, p, GAMMA_DELAUNAY_PART, opt, b, err);
+    return gamma_delaunay_part(coords, n, dim, p, opt, b, err);
 }
 
 /* The simplices without an empty ball (c1' < 0). */

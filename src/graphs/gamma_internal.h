@@ -111,6 +111,11 @@ fl_status gamma_brute_force(const double *coords, size_t n, int dim, const fl_ga
                             gamma_part part, const fl_graph_options *opt, graph_builder *b,
                             fl_error *err);
 
+/* The simplices with an empty ball (c1' >= 0) through the Delaunay triangulation (Thm. 3.2),
+ * degenerate sets included; flat sets fall back to the brute force. */
+fl_status gamma_delaunay_part(const double *coords, size_t n, int dim, const fl_gamma_params *p,
+                              const fl_graph_options *opt, graph_builder *b, fl_error *err);
+
 /* Output-sensitive search for the non-Delaunay edges (c1' < 0) of a 2D γ-graph whose
  * parameters require c1' >= -kappa, kappa < 1 (see gamma_lens.c). */
 fl_status gamma_lens_edges(const double *xy, size_t n, const fl_gamma_params *p, double kappa,

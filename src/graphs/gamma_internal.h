@@ -22,6 +22,16 @@ int gamma_in_circle(const double *a, const double *b, const double *w, const dou
 int gamma_in_sphere(const double *a, const double *b, const double *c, const double *w,
                     const double *e);
 
+/* Exact sign of sum_k coef[k] * (x[k]-y[k]).(u[k]-w[k]) over dim coordinates (terms <= 2). */
+int gamma_exact_sum_sign(int terms, const double *coef, const double *const *x,
+                         const double *const *y, const double *const *u,
+                         const double *const *w, int dim);
+/* Sign of (p-a).(p-b): -1 iff p is strictly inside the ball with diameter ab (Def. 2.9). */
+int gamma_diametral_sign(const double *a, const double *b, const double *p, int dim);
+/* Sign of |a-b|^2 - |c-d|^2. */
+int gamma_compare_dist(const double *a, const double *b, const double *c, const double *d,
+                       int dim);
+
 /* A (k-1)-simplex of k vertices in kD with the floating frame its balls are built on: the
  * centre `center` and radius `r` of the smallest ball touching the vertices, and the unit
  * normal `normal` of their hyperplane H. The balls touching the vertices are B(t), centred at

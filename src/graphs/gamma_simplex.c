@@ -198,7 +198,15 @@ static double witness_offset(const gamma_frame *f, const double *coords, uint32_
     double pi = dot(d, d, f->dim) - 2 * dot(d, ca, f->dim);
     double h = fabs(dot(d, f->normal, f->dim));
     if (h < DBL_MIN) h = DBL_MIN;
-    return pi / (2 * side * h);
+    double tau = pi / (2 * side * h);
+    if (f->dim == 2) {
+        /* In 2D the sign of pi (w inside the circle with diameter v0v1) is exact, so "which
+         * side is the centre on" (c0's sign, Gabriel-ness) is decided exactly. */
+        int ps = gamma_diametral_sign(f->v[0], f->v[1], p, 2);
+        if (ps == 0) return 0.0;
+        tau = fmax(fabs(tau), DBL_TRUE_MIN) * ps * side;
+    }
+    return tau;
 }
 
 /* |c| of the ball B(t): 1 - r/sqrt(r^2+t^2), in a form without cancellation for small t. */
@@ -222,9 +230,9 @@ static int offset_side(double t)
 static double lesser_parameter(double ta, double tb, double r, int c1_sign)
 {
     double ma = ball_magnitude(ta, r), mb = ball_magnitude(tb, r);
-    double m = fmin(ma, mb);
+    double m = fmax(fmin(ma, mb), DBL_TRUE_MIN); /* nonzero offset: keep the sign */
     int sa = offset_side(ta), sb = offset_side(tb);
-    if (m == 0 || sa == 0 || sb == 0) return 0.0;
+    if (sa == 0 || sb == 0) return 0.0;
     int same = sa == sb;
     return same ? -c1_sign * m : c1_sign * m;
 }

@@ -515,6 +515,114 @@ void fl_rt3_free(fl_rt3 *rt);
 /* end of delaunay */
 
 
+/* ==== graphs ============================================================================== */
+/* (section owned by src/graphs) — the γ-neighbourhood graph and the classical graphs it unifies
+ * (thesis ch. 2.2 and 3). See docs/gamma.md for every parameter regime and the algorithms.
+ *
+ * The γ-neighbourhood N_γ(c0,c1) of k vertices in kD (an edge in 2D, a triangle in 3D) is built
+ * from two balls B0, B1 touching the vertices, of radii r/(1-|c0|) and r/(1-|c1|), where r is the
+ * radius of the smallest ball touching them (Def. 3.1). c0, c1 in [-1,1], |c0| <= |c1|;
+ * c0*c1 > 0: the centres lie on opposite sides of the vertices' hyperplane, c0*c1 < 0: on the same
+ * side; c1 >= 0: the neighbourhood is the union of the open balls, c1 < 0: their intersection.
+ * The open simplex is always part of it; |c| = 1 is an open half-space. */
+
+/* Which γ-graph to build. range == 0: γ(c[0], c[1]) joins the vertices of a simplex when one of
+ * its (at most two, mirror-symmetric) N_γ(c[0],c[1]) is empty (Def. 3.2); needs c in [-1,1] and
+ * |c[0]| <= |c[1]|. range != 0: γ([c[0],c[1]],[c[2],c[3]]) joins them when their largest empty
+ * N_γ(c0',c1') has c0' in [c[0],c[1]] and c1' in [c[2],c[3]] (Def. 3.3); needs
+ * -1 <= c[0] <= c[1] <= 1 and -1 <= c[2] <= c[3] <= 1.
+ * Reductions (§3.2): γ(-1,1) = convex hull, γ([-1,1],[0,1]) = Delaunay (all simplices with an
+ * empty ball; equal to the DT on non-degenerate input), γ(0,0) = Gabriel graph (2D),
+ * γ(b,b) = circle-based β-skeleton, γ(1,1) empty and γ(-1,-1) complete in general position. */
+typedef struct fl_gamma_params {
+    int range;
+    double c[4];
+} fl_gamma_params;
+
+/* How to build it. All zero is a safe default: the fastest exact method for the parameters. */
+typedef enum fl_gamma_method {
+    FL_GAMMA_AUTO = 0,       /* Delaunay-based when c1' >= 0 suffices (Thm. 3.2), output-sensitive
+                                search for non-Delaunay simplices (c1' < 0), brute force last */
+    FL_GAMMA_BRUTE_FORCE = 1 /* Theorem 3.1: every k-subset against every point, O(N^(k+1)) */
+} fl_gamma_method;
+
+typedef struct fl_graph_options {
+    fl_gamma_method method;
+    int want_params;         /* nonzero: also return (c0', c1') of every simplex */
+    fl_progress_fn progress; /* may be NULL */
+    void *progress_user;
+} fl_graph_options;
+
+/* A geometric (hyper-)graph on `vertex_count` input points of dimension `dim`: `simplex_count`
+ * simplices of `simplex_size` input indices each (2: edges, 3: triangles), each sorted
+ * increasingly, the list sorted lexicographically. `params` is NULL or holds (c0', c1') per
+ * simplex (γ-graphs with want_params). Free with fl_graph_free. */
+typedef struct fl_graph {
+    int dim;
+    size_t vertex_count;
+    int simplex_size;
+    size_t simplex_count;
+    uint32_t *simplices;
+    double *params;
+} fl_graph;
+
+void fl_graph_free(fl_graph *graph);
+
+/* Builds a γ-graph of n points (dim 2: edges, dim 3: triangles). coords holds n*dim finite
+ * doubles; the points must be pairwise distinct (duplicates are reported with their indices).
+ * opt may be NULL. Cost: O(N log N) for ranges with c2 >= 0 in non-degenerate sets (Thm. 3.2),
+ * output-sensitive for c1' < 0 in 2D, O(N^(k+1)) brute force otherwise (see docs/gamma.md).
+ * On failure *out is zeroed. FL_ERR_USAGE for bad parameters, FL_ERR_INPUT for bad points. */
+fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma_params *params,
+                         const fl_graph_options *opt, fl_graph *out, fl_error *err);
+
+/* The largest empty neighbourhood of one simplex (k = dim distinct indices) against all n
+ * points, in O(N): *c0, *c1 receive (c0', c1') (Def. 3.3) and the return value is 1; it is 0
+ * when no N_γ of the simplex is empty (another point lies in the closed simplex, or the vertices
+ * are collinear) and -1 on bad arguments. c1' >= 0 exactly when some ball touching the vertices
+ * is empty; this is the quantity constriction's γ-indicator derives from (Def. 5.1/5.2). */
+int fl_gamma_simplex_params(const double *coords, size_t n, int dim, const uint32_t *simplex,
+                            double *c0, double *c1);
+
+/* Parses "c0,c1" (range 0) or "c0,c1,c2,c3" (range 1) into *params and validates it. */
+fl_status fl_gamma_params_parse(const char *text, fl_gamma_params *params, fl_error *err);
+
+/* The classical graphs of thesis §2.2. */
+typedef enum fl_graph_kind {
+    FL_GRAPH_CONVEX_HULL, /* edges (2D) / triangles (3D), = γ(-1,1) */
+    FL_GRAPH_DELAUNAY,    /* edges / triangles with an empty ball, = γ([-1,1],[0,1]) */
+    FL_GRAPH_GABRIEL,     /* edges whose smallest ball is empty (kD, Def. 2.9) */
+    FL_GRAPH_RNG,         /* relative neighbourhood graph (Def. 2.8), edges */
+    FL_GRAPH_EMST,        /* Euclidean minimum spanning tree (Def. 2.5), edges; ties: lower index */
+    FL_GRAPH_NNG,         /* nearest-neighbour graph (Def. 2.4): i joined to its nearest point,
+                             ties to the lowest index */
+    FL_GRAPH_BETA_CIRCLE, /* β_c(b) skeleton (Def. 2.15), 2D only, b in [-1,1] */
+    FL_GRAPH_BETA_LUNE,   /* β_l(b) skeleton (Def. 2.16), 2D only, b in [-1,1] */
+    FL_GRAPH_ALPHA_SHAPE  /* α(a) shape (Def. 2.14): simplices touched by a generalized ball of
+                             radius 1/a that contains no point in its interior (a < 0), that
+                             contains every point (a > 0), or a half-space (a = 0, the hull) */
+} fl_graph_kind;
+
+/* Builds a classical graph; `param` is b for the β-skeletons, a for the α-shape, unused
+ * otherwise. Same input contract as fl_gamma_graph. */
+fl_status fl_classic_graph(const double *coords, size_t n, int dim, fl_graph_kind kind,
+                           double param, fl_graph *out, fl_error *err);
+
+/* Parses "ch", "dt", "gabriel", "rng", "emst", "nng", "beta-circle:B", "beta-lune:B",
+ * "alpha:A" (the CLI's --kind). */
+fl_status fl_graph_kind_parse(const char *text, fl_graph_kind *kind, double *param,
+                              fl_error *err);
+
+/* Writes the graph of the n points `coords` (dimension graph->dim) by the extension of path:
+ * .svg (2D only: points and edges, like the thesis's Figures 3.3-3.6), .obj (v lines, then l
+ * lines for edges or f lines for triangles), .ply (ascii: vertices, then edges or faces).
+ * Atomic: on failure the target is untouched. */
+fl_status fl_write_graph(const char *path, const double *coords, size_t n, const fl_graph *graph,
+                         fl_error *err);
+
+/* end of graphs */
+
+
 #ifdef __cplusplus
 }
 #endif

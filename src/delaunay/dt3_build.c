@@ -163,14 +163,14 @@ static void orthogonal_ball(const double *const p[4], int weighted, double out[4
  * counterclockwise seen from outside. */
 static void fill_hull_face(const dt3_mesh *m, uint32_t s, uint32_t *face)
 {
-    const uint32_t *v = m->tv + 4 * (size_t)s;
+    const uint32_t *v = dt3_v(m, s);
     int k = 0;
     while (v[k] != DT3_INF)
         k++;
-    uint32_t link = m->tn[4 * (size_t)s + k], f = link >> 2;
+    uint32_t link = dt3_n(m, s)[k], f = link >> 2;
     const int *c = dt3_face_corners[link & 3];
     for (int i = 0; i < 3; i++)
-        face[i] = m->gid[m->tv[4 * (size_t)f + c[i]]];
+        face[i] = m->gid[dt3_v(m, f)[c[i]]];
 }
 
 /* Hull faces and centres: everything that needs the store in local numbering. */
@@ -184,7 +184,7 @@ static fl_status extract_extras(const dt3_mesh *m, const uint32_t *newid, int wa
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu tetrahedra",
                        out->tet_count);
     for (size_t s = 0, h = 0; s < m->slots; s++) {
-        const uint32_t *v = m->tv + 4 * s;
+        const uint32_t *v = dt3_v(m, s);
         if (newid[s] == DT3_NONE && v[0] != DT3_DEAD)
             fill_hull_face(m, (uint32_t)s, out->hull_faces + 3 * h++);
         if (newid[s] == DT3_NONE || !want_centers) continue;
@@ -200,23 +200,27 @@ static fl_status extract_extras(const dt3_mesh *m, const uint32_t *newid, int wa
 
 /* Turns the store into the output in place: finite tetrahedra are moved down to their new
  * index (never above their slot, so nothing unread is overwritten), corners become caller
- * indices and links become tetrahedron indices. The store then belongs to out. */
-static void compact_store(dt3_mesh *m, const uint32_t *newid, dt3_output *out)
+ * indices and links become tetrahedron indices; then the links are copied out and the corners
+ * packed 4 a tetrahedron. The store's block becomes out->tet. */
+static fl_status compact_store(dt3_mesh *m, const uint32_t *newid, dt3_output *out, fl_error *err)
 {
+    size_t nt = out->tet_count;
+    out->adj = fl_alloc_array(nt, 4 * sizeof *out->adj);
+    if (!out->adj)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu tetrahedra", nt);
     for (size_t s = 0; s < m->slots; s++) {
         size_t d = newid[s];
         if (d == DT3_NONE) continue;
-        for (int k = 0; k < 4; k++) {
-            m->tv[4 * d + k] = m->gid[m->tv[4 * s + k]];
-            m->tn[4 * d + k] = newid[m->tn[4 * s + k] >> 2];
-        }
+        const uint32_t *v = dt3_v(m, s), *n = dt3_n(m, s);
+        for (int k = 0; k < 4; k++)
+            out->adj[4 * d + k] = newid[n[k] >> 2];
+        uint32_t g[4] = {m->gid[v[0]], m->gid[v[1]], m->gid[v[2]], m->gid[v[3]]};
+        memcpy(m->cell + 4 * d, g, sizeof g);
     }
-    size_t nt = out->tet_count ? out->tet_count : 1;
-    uint32_t *tv = fl_realloc_array(m->tv, nt, 4 * sizeof *tv);
-    uint32_t *tn = fl_realloc_array(m->tn, nt, 4 * sizeof *tn);
-    out->tet = tv ? tv : m->tv; /* a failed shrink keeps the larger block */
-    out->adj = tn ? tn : m->tn;
-    m->tv = m->tn = NULL;
+    uint32_t *tet = fl_realloc_array(m->cell, nt ? nt : 1, 4 * sizeof *tet);
+    out->tet = tet ? tet : m->cell; /* a failed shrink keeps the larger block */
+    m->cell = NULL;
+    return FL_OK;
 }
 
 static fl_status extract(dt3_mesh *m, int want_centers, dt3_output *out, fl_error *err)
@@ -226,14 +230,14 @@ static fl_status extract(dt3_mesh *m, int want_centers, dt3_output *out, fl_erro
     out->tet_count = out->hull_face_count = 0;
     for (size_t s = 0; s < m->slots; s++) {
         newid[s] = DT3_NONE;
-        if (m->tv[4 * s] == DT3_DEAD) continue;
+        if (dt3_v(m, s)[0] == DT3_DEAD) continue;
         if (dt3_is_infinite(m, (uint32_t)s))
             out->hull_face_count++;
         else
             newid[s] = (uint32_t)out->tet_count++;
     }
     fl_status st = extract_extras(m, newid, want_centers, out, err);
-    if (st == FL_OK) compact_store(m, newid, out);
+    if (st == FL_OK) st = compact_store(m, newid, out, err);
     free(newid);
     return st;
 }

@@ -14,7 +14,7 @@ static const char *stage_name(int weighted)
 
 static fl_status check_input(const double *in, size_t n, int stride, fl_error *err)
 {
-    if (n > (size_t)UINT32_MAX - 2)
+    if (n > (size_t)UINT32_MAX - 2 || n > SIZE_MAX / (4 * sizeof(double)))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "%zu points: at most 4294967293 are supported",
                        n);
     if (n && !in) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "the point array is NULL");

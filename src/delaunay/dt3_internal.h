@@ -92,14 +92,6 @@ static inline int dt3_power_sos(int weighted, const double *a, const double *b, 
                     : fl_insphere_sos(a, b, c, d, e, ga, gb, gc, gd, ge);
 }
 
-/* Finds, for the new point q, a tetrahedron in conflict with it or the tetrahedron whose closed
- * region contains it: a finite tetrahedron containing q, or an infinite one whose hull face q
- * sees strictly. */
-uint32_t dt3_locate(dt3_mesh *m, const double *q);
-
-/* Is point p in conflict with tetrahedron t (finite or infinite)? */
-int dt3_in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p);
-
 /* What dt3_build produces; dt3.c and rt3.c move it into their public structs. */
 typedef struct dt3_output {
     uint32_t *duplicate_of; /* n entries */

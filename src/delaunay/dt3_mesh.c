@@ -139,7 +139,9 @@ static int inf_corner(const dt3_mesh *m, uint32_t t)
     return -1;
 }
 
-uint32_t dt3_locate(dt3_mesh *m, const double *q)
+/* Finds, for the new point q, a tetrahedron whose closed region contains it (finite), or an
+ * infinite one whose hull face q sees strictly. */
+static uint32_t locate(dt3_mesh *m, const double *q)
 {
     uint32_t t = m->last, prev = DT3_NONE;
     int k = inf_corner(m, t);
@@ -163,7 +165,7 @@ uint32_t dt3_locate(dt3_mesh *m, const double *q)
     }
 }
 
-static int finite_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
+static inline int finite_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
 {
     const uint32_t *v = dt3_v(m, t);
     const double *a = pt(m, v[0]), *b = pt(m, v[1]), *c = pt(m, v[2]), *d = pt(m, v[3]);
@@ -176,7 +178,8 @@ static int finite_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
     return s > 0;
 }
 
-int dt3_in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
+/* Is point p in conflict with tetrahedron t (finite or infinite)? */
+static inline int in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
 {
     int k = inf_corner(m, t);
     if (k < 0) return finite_conflict(m, t, p);
@@ -213,7 +216,7 @@ static int find_cavity(dt3_mesh *m, uint32_t t, uint32_t p)
         for (int k = 0; k < 4; k++) {
             uint32_t u = dt3_n(m, c)[k] >> 2;
             if (m->mark[u] == 0) {
-                int in = dt3_in_conflict(m, u, p);
+                int in = in_conflict(m, u, p);
                 m->mark[u] = in ? 1 : 2;
                 if (push_u32(in ? &m->cavity : &m->touched, u) != 0) return -1;
             }
@@ -318,8 +321,8 @@ static int collect_hidden(dt3_mesh *m, uint32_t p, fl_vec *hidden)
 
 dt3_insert_result dt3_insert(dt3_mesh *m, uint32_t p, fl_vec *hidden)
 {
-    uint32_t t = dt3_locate(m, pt(m, p));
-    if (!dt3_in_conflict(m, t, p)) return DT3_REDUNDANT;
+    uint32_t t = locate(m, pt(m, p));
+    if (!in_conflict(m, t, p)) return DT3_REDUNDANT;
     int fail = find_cavity(m, t, p);
     if (!fail && m->weighted) fail = collect_hidden(m, p, hidden);
     if (!fail) fail = fill_cavity(m, p);

@@ -95,19 +95,37 @@ static fl_status first_tetrahedron(const double *pts, int stride, size_t n, uint
     return FL_OK;
 }
 
+/* Appends the caller's indices of the local points in `local` to `hidden`. */
+static fl_status report_hidden(const dt3_mesh *m, const fl_vec *local, fl_vec *hidden,
+                               fl_error *err)
+{
+    for (size_t k = 0; k < local->count; k++) {
+        uint32_t g = m->gid[((const uint32_t *)local->data)[k]];
+        if (fl_vec_push(hidden, &g, 1) != 0)
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    }
+    return FL_OK;
+}
+
+/* Inserts every point but the first tetrahedron's, in order. A ball can be hidden on arrival
+ * (DT3_REDUNDANT) or later, swallowed by another ball's cavity; both are reported. A point
+ * never is redundant without weights (its containing tetrahedron's circumsphere contains it):
+ * that is reported as an internal error rather than trusted. */
 static fl_status insert_all(dt3_mesh *m, size_t n, const uint32_t v[4], fl_progress_fn progress,
                             void *user, fl_vec *hidden, fl_error *err)
 {
     fl_vec swallowed;
     fl_vec_init(&swallowed, sizeof(uint32_t));
     fl_status st = FL_OK;
+    const char *stage = stage_name(m->weighted);
     for (size_t i = 2; i < n && st == FL_OK; i++) {
         if (i == v[2] || i == v[3]) continue;
-        if ((i & 0x3fff) == 0 &&
-            fl_progress(progress, user, stage_name(m->weighted), (double)i / (double)n))
+        if ((i & 0x3fff) == 0 && fl_progress(progress, user, stage, (double)i / (double)n)) {
             st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+            break;
+        }
         swallowed.count = 0;
-        dt3_insert_result r = st == FL_OK ? dt3_insert(m, (uint32_t)i, &swallowed) : DT3_INSERTED;
+        dt3_insert_result r = dt3_insert(m, (uint32_t)i, &swallowed);
         if (r == DT3_NOMEM)
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1,
                          "out of memory after %zu of %zu points (the store holds at most 2^30 "
@@ -116,16 +134,12 @@ static fl_status insert_all(dt3_mesh *m, size_t n, const uint32_t v[4], fl_progr
         else if (r == DT3_REDUNDANT && !m->weighted)
             st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
                          "internal error: point %u is in conflict with no tetrahedron", m->gid[i]);
-        else if (r == DT3_REDUNDANT && fl_vec_push(&swallowed, &(uint32_t){(uint32_t)i}, 1))
+        else if (r == DT3_REDUNDANT && fl_vec_push(&swallowed, &(uint32_t){(uint32_t)i}, 1) != 0)
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-        for (size_t k = 0; k < swallowed.count && st == FL_OK; k++) {
-            uint32_t g = m->gid[((const uint32_t *)swallowed.data)[k]];
-            if (fl_vec_push(hidden, &g, 1) != 0)
-                st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-        }
+        if (st == FL_OK) st = report_hidden(m, &swallowed, hidden, err);
     }
     fl_vec_free(&swallowed);
-    if (st == FL_OK) fl_progress(progress, user, stage_name(m->weighted), 1.0);
+    if (st == FL_OK) fl_progress(progress, user, stage, 1.0);
     return st;
 }
 

@@ -147,8 +147,10 @@ static uint32_t locate(dt3_mesh *m, const double *q)
     int k = inf_corner(m, t);
     if (k >= 0) t = dt3_n(m, t)[k] >> 2;
     for (;;) {
-        /* Visibility walk; starting at a random face (and never stepping back) keeps it from
-         * cycling (Devillers, Pion, Teillaud: "Walking in a triangulation"). */
+        /* Visibility walk, crossing a face only when q is strictly beyond it. Starting at a
+         * random face makes it terminate with probability 1 on any triangulation; not stepping
+         * straight back saves a test (Devillers, Pion, Teillaud: "Walking in a
+         * triangulation", the remembering stochastic walk). */
         m->rng ^= m->rng << 13;
         m->rng ^= m->rng >> 7;
         m->rng ^= m->rng << 17;
@@ -195,9 +197,6 @@ static inline int in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
 
 /* ---- Bowyer-Watson insertion ---- */
 
-/* Breadth-first search of the tetrahedra in conflict with p from t (which is). The conflict
- * region is connected: it is the set of lower-hull facets visible from the lifted p. Marks:
- * 1 in the cavity, 2 tested and not in conflict. */
 /* fl_vec_push of one uint32 without the call in the common case. */
 static inline int push_u32(fl_vec *v, uint32_t x)
 {
@@ -206,6 +205,10 @@ static inline int push_u32(fl_vec *v, uint32_t x)
     return 0;
 }
 
+/* Breadth-first search of the tetrahedra in conflict with p from t (which is). The conflict
+ * region is connected: it is the set of lower-hull facets visible from the lifted p. Marks:
+ * 1 in the cavity, 2 tested and not in conflict; boundary collects the cavity faces (t << 2 | k)
+ * whose neighbour is not in conflict. */
 static int find_cavity(dt3_mesh *m, uint32_t t, uint32_t p)
 {
     m->cavity.count = m->touched.count = m->boundary.count = 0;

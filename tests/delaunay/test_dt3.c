@@ -158,6 +158,35 @@ static void test_dt3_cospherical_integer_points(void)
     free(p);
 }
 
+/* Triangles ijk with every other point strictly on one side (O(n^4)); each must be one of dt's
+ * hull faces. Returns how many there are. */
+static size_t brute_force_hull_faces(const double *p, size_t n, const fl_dt3 *dt)
+{
+    size_t count = 0;
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t j = i + 1; j < n; j++)
+            for (uint32_t k = j + 1; k < n; k++) {
+                int pos = 0, neg = 0;
+                for (size_t l = 0; l < n; l++) {
+                    int s = fl_orient3d(p + 3 * i, p + 3 * j, p + 3 * k, p + 3 * l);
+                    pos += s > 0;
+                    neg += s < 0;
+                }
+                if ((size_t)(pos + neg) != n - 3 || (pos && neg)) continue;
+                count++;
+                int found = 0;
+                for (size_t h = 0; h < dt->hull_face_count; h++) {
+                    const uint32_t *f = dt->hull_faces + 3 * h;
+                    int m = (f[0] == i || f[1] == i || f[2] == i) +
+                            (f[0] == j || f[1] == j || f[2] == j) +
+                            (f[0] == k || f[1] == k || f[2] == k);
+                    found |= m == 3;
+                }
+                CHECK_MSG(found, "brute-force hull triangle %u %u %u is missing", i, j, k);
+            }
+    return count;
+}
+
 /* The vertices of the hull faces are exactly the points on the hull boundary (brute force), and
  * every hull face supports the point set. Random and grid (coplanar facets) sets. */
 static void test_dt3_hull_matches_brute_force(void)
@@ -177,6 +206,8 @@ static void test_dt3_hull_matches_brute_force(void)
         }
         for (size_t i = 0; i < n; i++)
             CHECK_EQ_INT(on[i], dt3c_on_hull(p, 3, n, i));
+        if (trial < 2) /* general position: the hull triangles themselves are unique */
+            CHECK_EQ_INT(dt.hull_face_count, brute_force_hull_faces(p, n, &dt));
         free(on);
         fl_dt3_free(&dt);
         free(p);

@@ -149,7 +149,7 @@ static void test_rt3_equal_weights_give_the_delaunay_triangulation(void)
                 p[4 * i + 1] = (double)(i / 5 % 5);
                 p[4 * i + 2] = (double)(i / 25);
             }
-            p[4 * i + 3] = 2.5;
+            p[4 * i + 3] = trial == 0 ? 0.0 : 2.5; /* zero weights, then another constant */
             memcpy(xyz + 3 * i, p + 4 * i, 3 * sizeof *xyz);
         }
         fl_rt3 rt;

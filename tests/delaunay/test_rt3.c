@@ -255,9 +255,34 @@ static void test_rt3_power_criterion_on_grid_with_integer_weights(void)
     free(p);
 }
 
+/* Many small random subsets of the 3x3x3 grid with weights 0, 1 or 2 (repeated centres included):
+ * either a correct regular triangulation or a clean error. */
+static void test_rt3_random_subsets_of_a_small_grid(void)
+{
+    unsigned long long seed = 77;
+    double p[4 * 30];
+    for (int trial = 0; trial < 300; trial++) {
+        size_t n = 4 + (size_t)(fl_test_rand_u64(&seed) % 27);
+        for (size_t i = 0; i < 4 * n; i++)
+            p[i] = (double)(fl_test_rand_u64(&seed) % 3);
+        fl_rt3 rt;
+        fl_error err;
+        fl_status st = fl_rt3_build(p, n, NULL, &rt, &err);
+        if (st == FL_OK) {
+            CHECK_STATUS(fl_rt3_verify(p, &rt, &err), FL_OK, &err);
+            check_against_brute_force(p, n, &rt, 0);
+        } else {
+            CHECK_MSG(st == FL_ERR_ALGORITHM || st == FL_ERR_INPUT, "trial %d: %s", trial,
+                      err.message);
+        }
+        fl_rt3_free(&rt);
+    }
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_rt3_power_criterion_and_hidden_balls_by_brute_force),
              FL_TEST_CASE(test_rt3_later_balls_hide_earlier_vertices),
              FL_TEST_CASE(test_rt3_equal_weights_give_the_delaunay_triangulation),
              FL_TEST_CASE(test_rt3_coincident_centres), FL_TEST_CASE(test_rt3_orthogonal_balls),
              FL_TEST_CASE(test_rt3_bad_input),
-             FL_TEST_CASE(test_rt3_power_criterion_on_grid_with_integer_weights))
+             FL_TEST_CASE(test_rt3_power_criterion_on_grid_with_integer_weights),
+             FL_TEST_CASE(test_rt3_random_subsets_of_a_small_grid))

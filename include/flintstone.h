@@ -163,8 +163,9 @@ int fl_orient3d_sos(const double *a, const double *b, const double *c, const dou
  *  - a point d exactly on the circle through a, b, c (orient2d(a, b, c) = +1) with a higher
  *    index than a, b and c is reported inside (+1): a later-inserted point on the circle is
  *    in conflict;
- *  - the orientation predicates are unperturbed in this family: use fl_orient2d/3d (not _sos)
- *    alongside these, and never call them on flat triangles/tetrahedra.
+ *  - coordinates are unperturbed in this family, so it pairs with the plain fl_orient2d/3d,
+ *    not with fl_orient*_sos (a different perturbation). On a flat triangle/tetrahedron the
+ *    answer is still consistent with the perturbed lifted points but describes no circle.
  * The weighted versions use the same rule on the weight (the lift is |p|^2 - w). */
 int fl_incircle_sos(const double *a, const double *b, const double *c, const double *d,
                     uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id);

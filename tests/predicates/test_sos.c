@@ -192,13 +192,20 @@ static void test_sos_flips_sign_when_two_points_swap_with_their_indices(void)
 }
 
 /* A point on the circle through a ccw triangle, with a higher index than its corners, is
- * inside (in conflict); with a lower index than all of them, outside. */
+ * inside (in conflict). With a lower index, the heaviest corner c decides: lowering its lift
+ * lowers the plane at d when d's barycentric coordinate for c is positive (d on c's side of
+ * line ab), which leaves d outside; otherwise d is inside. */
 static void test_incircle_sos_puts_later_cocircular_point_inside(void)
 {
-    double a[2] = {5, 0}, b[2] = {0, 5}, c[2] = {-5, 0}, d[2] = {3, -4};
+    double a[2] = {5, 0}, b[2] = {0, 5}, c[2] = {-5, 0}, d[2] = {3, -4}, d2[2] = {4, 3};
     CHECK_EQ_INT(fl_incircle(a, b, c, d), 0);
+    CHECK_EQ_INT(fl_incircle(a, b, c, d2), 0);
     CHECK_EQ_INT(fl_incircle_sos(a, b, c, d, 1, 2, 3, 4), 1);
+    CHECK_EQ_INT(fl_incircle_sos(a, b, c, d2, 1, 2, 3, 4), 1);
+    CHECK_EQ_INT(fl_orient2d(a, b, d), fl_orient2d(a, b, c)); /* d on c's side of ab */
     CHECK_EQ_INT(fl_incircle_sos(a, b, c, d, 1, 2, 3, 0), -1);
+    CHECK_EQ_INT(fl_orient2d(a, b, d2), -fl_orient2d(a, b, c)); /* d2 across ab */
+    CHECK_EQ_INT(fl_incircle_sos(a, b, c, d2, 1, 2, 3, 0), 1);
     double e[3] = {1, 2, 2}, f[3] = {2, 1, -2}, g[3] = {-2, 2, -1}, h[3] = {2, -2, 1};
     double x[3] = {-1, -2, -2};
     int o = fl_orient3d(e, f, g, h);

@@ -92,6 +92,15 @@ typedef struct fl_polygon {
 
 void fl_polygon_free(fl_polygon *polygon);
 
+/* Balls (weighted points): `count` balls, centre and weight interleaved in xyzw (4 doubles a
+ * ball); the weight is the squared radius (it may be negative or zero for weighted points). */
+typedef struct fl_balls {
+    size_t count;
+    double *xyzw;
+} fl_balls;
+
+void fl_balls_free(fl_balls *balls);
+
 /* ==== predicates ========================================================================== */
 /* (section owned by src/predicates; docs/predicates.md)
  *
@@ -188,19 +197,24 @@ int fl_insphere_weighted_sos(const double *a, const double *b, const double *c, 
  * offset (binary) and what is wrong. NaN/Inf coordinates and out-of-range indices are rejected
  * with FL_ERR_INPUT; a file that cannot be opened is FL_ERR_IO. On failure *out is zeroed.
  *
- * Points:   .xyz .xy .txt .csv (whitespace or commas, '#' comments, CRLF, optional header
+ * Points:   .xyz .xy .txt .csv (whitespace, ',' or ';', '#' comments, CRLF, optional header
  *           line; 2 or 3 numbers a line, the same on every line), .ply, .off, .obj (vertices).
+ *           Text numbers follow the C library's LC_NUMERIC ('.' in the "C" locale, which the
+ *           flintstone command never changes).
  * Meshes:   .off, .obj (polygons fan-triangulated; v, v/vt, v//vn, v/vt/vn; negative indices),
  *           .ply (ascii, binary little/big endian; any scalar types, properties in any order),
  *           .stl (ascii and binary; coincident vertices welded exactly).
  * Polygons: .xy (one ring a block; a blank line separates rings; each ring is its own polygon),
- *           .geojson (Polygon, MultiPolygon, Feature, FeatureCollection; holes kept). */
+ *           .geojson or .json (Polygon, MultiPolygon, Feature, FeatureCollection,
+ *           GeometryCollection; holes kept; rings must be closed; other geometries skipped).
+ * See docs/formats.md for every rule. */
 fl_status fl_read_points(const char *path, fl_points *out, fl_error *err);
 fl_status fl_read_mesh(const char *path, fl_mesh *out, fl_error *err);
 fl_status fl_read_polygon(const char *path, fl_polygon *out, fl_error *err);
 
 /* The same readers on a buffer already in memory (for embedding and fuzzing). `format` is an
- * extension without the dot ("ply", "stl", ...); `name` is used in error messages. */
+ * extension without the dot, any case ("ply", "PLY", ...); `name` is used in error messages.
+ * `data` need not be NUL-terminated. */
 fl_status fl_parse_points(const char *format, const char *name, const void *data, size_t size,
                           fl_points *out, fl_error *err);
 fl_status fl_parse_mesh(const char *format, const char *name, const void *data, size_t size,
@@ -209,11 +223,26 @@ fl_status fl_parse_polygon(const char *format, const char *name, const void *dat
                            fl_polygon *out, fl_error *err);
 
 /* Writers choose the format by extension and write atomically (temporary file, then rename):
- * on failure the target is untouched. Points: .xyz .xy .ply. Meshes: .off .obj .ply (binary
- * little endian) .stl (binary). Polygons: .xy .geojson .svg (a picture of the rings). */
+ * on failure the target is untouched. Points: .xyz .txt, .xy (2D only), .ply (2D gets z = 0).
+ * Meshes: .off .obj .ply (binary little endian) .stl (binary). Polygons: .xy (holes come back
+ * as separate polygons), .geojson/.json (exact, holes kept), .svg (a picture of the rings).
+ * Text coordinates are written with %.17g, so reading them back gives the same doubles. */
 fl_status fl_write_points(const char *path, const fl_points *points, fl_error *err);
 fl_status fl_write_mesh(const char *path, const fl_mesh *mesh, fl_error *err);
 fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error *err);
+
+/* Writes a tetrahedral mesh: `point_count` points xyz[3i..3i+2] and `tet_count` tetrahedra of 4
+ * point indices each (all < point_count). By extension: .vtk (legacy ASCII unstructured grid,
+ * opens in ParaView) or TetGen's .node/.ele pair (either name may be given; both files
+ * "<stem>.node" and "<stem>.ele" are written, 0-based indices with "# firstnumber 0" noted).
+ * Written atomically; on failure no target is changed. */
+/* Balls as text, one "x y z w" line each (.xyzw, .txt or .csv; '#' comments, an optional header
+ * line, separators as for points). Read and write like points; NaN/Inf rejected. */
+fl_status fl_read_balls(const char *path, fl_balls *out, fl_error *err);
+fl_status fl_write_balls(const char *path, const fl_balls *balls, fl_error *err);
+
+fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
+                        const uint32_t *tet, size_t tet_count, fl_error *err);
 
 /* end of io */
 
@@ -221,13 +250,377 @@ fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error
 /* ==== mesh ================================================================================ */
 /* (section owned by src/mesh) */
 
+/* Options of fl_mesh_check. All zero is the default: every check runs, no progress reports. */
+typedef struct fl_mesh_check_options {
+    int skip_self_intersections; /* nonzero: skip the (most expensive) self-intersection search */
+    fl_progress_fn progress;     /* optional; stages "topology", "self-intersections" */
+    void *progress_user;         /* passed to progress */
+} fl_mesh_check_options;
+
+/* What fl_mesh_check found. Counts refer to the mesh as given (no welding). Release with
+ * fl_mesh_report_free. Definitions:
+ *  - A vertex is *referenced* when some triangle uses it; unreferenced vertices are counted
+ *    in unreferenced_vertices and take part in nothing else (not in components, not in euler).
+ *  - Edges are the undirected vertex pairs {a,b} used by triangle sides. A triangle with a
+ *    repeated index contributes its sides as they are (a side {a,a} is an edge of its own).
+ *  - Components are maximal sets of triangles connected through shared vertices (the usual
+ *    MeshLab notion; two cubes touching at one vertex index are one component). Numbered in
+ *    order of their lowest triangle index. */
+typedef struct fl_mesh_report {
+    size_t vertices;              /* mesh->vertex_count */
+    size_t faces;                 /* mesh->triangle_count */
+    size_t edges;                 /* distinct undirected edges */
+    size_t unreferenced_vertices; /* vertices no triangle uses */
+    size_t boundary_edges;        /* edges with exactly one incident triangle */
+    size_t nonmanifold_edges;     /* edges with three or more incident triangles */
+    size_t nonmanifold_vertices;  /* referenced vertices whose triangles form more than one fan
+                                   * (edge-connected set around the vertex), e.g. two cones
+                                   * touching at their apex */
+    size_t misoriented_edges;     /* edges used twice in the same direction */
+    int closed;                   /* 1 iff faces > 0 and every edge has exactly two triangles */
+    int manifold;                 /* 1 iff no non-manifold edge and no non-manifold vertex */
+    int oriented;                 /* 1 iff no directed edge (a->b) is used by two triangles, i.e.
+                                   * every two-triangle edge is used once in each direction */
+    long long euler;              /* V - E + F over referenced vertices, edges and triangles */
+    size_t components;            /* number of components (0 for a mesh without triangles) */
+    long long *component_genus;   /* per component: (2 - (V-E+F)) / 2 when the component is
+                                   * closed, manifold and oriented, else -1 */
+    size_t *component_faces;      /* per component: its number of triangles */
+    long long genus;              /* sum of component_genus when none is -1, else -1 */
+    size_t degenerate_faces;      /* triangles with a repeated index or three collinear vertices
+                                   * (decided exactly: the cross product is the zero vector) */
+    size_t duplicate_vertices;    /* vertices whose coordinates equal (==, so -0 equals +0) those
+                                   * of a lower-indexed vertex */
+    int self_intersections_checked; /* 0 when skipped by the options */
+    size_t self_intersections;    /* pairs of non-degenerate triangles that intersect beyond the
+                                   * vertices they share, decided exactly on the closed
+                                   * triangles: sharing no vertex index, any common point counts
+                                   * (touching too); sharing one vertex, any common point other
+                                   * than it; sharing an edge, overlap beyond the edge (coplanar
+                                   * on the same side); sharing all three (duplicate faces),
+                                   * always. Degenerate triangles are not tested. */
+    double bbox[6];               /* min x, y, z, max x, y, z over all vertices (0 when none) */
+    double area;                  /* sum of triangle areas (floating point) */
+    double volume;                /* enclosed signed volume (divergence theorem), positive when
+                                   * triangles are counter-clockwise seen from outside; NaN
+                                   * unless the mesh is closed and oriented */
+} fl_mesh_report;
+
+/* Checks a triangle mesh: topology (edges, boundary, manifoldness, orientation, components,
+ * Euler characteristic, genus), degeneracies, duplicate vertices, self-intersections and the
+ * measures (bbox, area, volume). Runs in O(n log n) expected time for n triangles.
+ * `opt` may be NULL (defaults). On success *report is filled and must be released with
+ * fl_mesh_report_free. Errors: FL_ERR_INPUT for an index >= vertex_count or a non-finite
+ * coordinate, FL_ERR_INPUT when 3 * triangle_count >= 2^32 - 1, FL_ERR_NOMEM,
+ * FL_ERR_ALGORITHM "cancelled" when progress asked to stop. On failure *report is zeroed. */
+fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
+                        fl_mesh_report *report, fl_error *err);
+
+void fl_mesh_report_free(fl_mesh_report *report);
+
+/* Welds exactly coincident vertices: out receives the distinct vertex positions (==, so -0
+ * equals +0) in order of first occurrence and mesh's triangles re-indexed to them, in the same
+ * order (triangles that become degenerate are kept; fl_mesh_check counts them). Vertices no
+ * triangle uses are kept too. O(V + T) expected. Release out with fl_mesh_free. Errors:
+ * FL_ERR_INPUT for an index >= vertex_count, FL_ERR_NOMEM; on failure *out is zeroed. */
+fl_status fl_mesh_weld(const fl_mesh *mesh, fl_mesh *out, fl_error *err);
+
+/* What fl_polygon_check found. Release with fl_polygon_report_free. */
+typedef struct fl_polygon_report {
+    size_t vertices, rings, polygons;
+    size_t holes;                 /* rings that are not the first ring of their polygon */
+    int simple;                   /* 1 iff every ring has >= 3 vertices, no two consecutive
+                                   * vertices of a ring are equal, and no two edges of any rings
+                                   * meet except consecutive edges of one ring at their common
+                                   * vertex (decided exactly) */
+    size_t edge_intersections;    /* pairs of edges that meet where they should not: edges of
+                                   * different rings or non-consecutive edges of one ring with
+                                   * a common point; consecutive edges overlapping beyond their
+                                   * common vertex. Rings with < 3 vertices take no part. */
+    int *ring_orientation;        /* per ring: +1 counter-clockwise, -1 clockwise, 0 when the
+                                   * ring is degenerate; exact turn at the lowest-leftmost vertex,
+                                   * which is the ring's orientation when the ring is simple */
+    double *ring_area;            /* per ring: signed shoelace area (positive when ccw) */
+    int orientation;              /* +1: every outer ring ccw and every hole cw (GeoJSON,
+                                   * RFC 7946); -1: the reverse (ESRI shapefile); 0: mixed */
+    double area;                  /* sum over polygons of |outer| - sum |holes| */
+    int holes_inside;             /* 1: every hole lies strictly inside its outer ring; 0: some
+                                   * hole does not; -1: not decided because not simple */
+} fl_polygon_report;
+
+/* Checks planar polygons: simplicity, ring orientation, areas, holes inside their outer ring.
+ * O(n log n) for n vertices when few edges are near each other, plus O(outer ring size) per
+ * hole for holes_inside. An all-zero polygon (no vertices, rings or polygons) is valid. On success *report must be
+ * released with fl_polygon_report_free. Errors: FL_ERR_INPUT for ring/polygon ranges that do
+ * not fit the arrays or non-finite coordinates; FL_ERR_NOMEM. On failure *report is zeroed. */
+fl_status fl_polygon_check(const fl_polygon *polygon, fl_polygon_report *report, fl_error *err);
+
+void fl_polygon_report_free(fl_polygon_report *report);
+
 /* end of mesh */
 
 
 /* ==== delaunay ============================================================================ */
 /* (section owned by src/delaunay) */
 
+/* ---- 2D Delaunay triangulation (src/delaunay/dt2.c) ----
+ * Every combinatorial decision is made with the exact predicates; ties among cocircular points
+ * are broken by symbolic perturbation (simulation of simplicity, by input index), so the result
+ * is one well-defined triangulation even for grids and points on a circle: all triangles are
+ * counterclockwise with nonzero area, they cover the convex hull of the points exactly, and no
+ * input point lies strictly inside any triangle's circumcircle. Points on the hull boundary
+ * (also collinear ones) are vertices. Expected O(n log n)-ish time, in practice linear after the
+ * spatial sort (see docs/delaunay.md). */
+
+/* Options; all zero is the default (no progress reports, no circumcenters). */
+typedef struct fl_dt2_options {
+    fl_progress_fn progress; /* called during insertion; may be NULL */
+    void *progress_user;
+    int want_circumcenters; /* nonzero: fill fl_dt2.circumcenters */
+} fl_dt2_options;
+
+/* A 2D Delaunay triangulation. Vertex indices refer to the input points; a point with an exact
+ * duplicate earlier in the input is represented by that earlier point (duplicate_of). Triangle
+ * t has corners tri[3t..3t+2] in counterclockwise order; adj[3t+k] is the triangle across the
+ * edge opposite corner k (the edge tri[3t+(k+1)%3] -> tri[3t+(k+2)%3]), or UINT32_MAX when that
+ * edge is on the convex hull. triangle_count = 2*unique_count - 2 - hull_count. */
+typedef struct fl_dt2 {
+    size_t point_count;     /* input points */
+    size_t unique_count;    /* distinct points (duplicates merged) */
+    uint32_t *duplicate_of; /* point_count entries: the first input point with identical
+                               coordinates (-0.0 == +0.0); itself when it is the first */
+    size_t triangle_count;
+    uint32_t *tri; /* 3 per triangle, counterclockwise */
+    uint32_t *adj; /* 3 per triangle: neighbour across the edge opposite corner k or UINT32_MAX */
+    size_t hull_count;
+    uint32_t *hull;        /* hull_count vertices of the convex hull, counterclockwise, including
+                              points in the relative interior of hull edges */
+    double *circumcenters; /* 2 per triangle when requested, else NULL (floating point; may be
+                              huge or infinite for nearly flat triangles) */
+} fl_dt2;
+
+/* Builds the Delaunay triangulation of the n points xy[2i], xy[2i+1]. `opt` may be NULL.
+ * On success *out holds the result (free with fl_dt2_free). Errors (then *out is zeroed):
+ * FL_ERR_USAGE for NULL buffers; FL_ERR_INPUT for NaN/Inf coordinates, fewer than 3 distinct
+ * points, or more than 2^29 points; FL_ERR_ALGORITHM when all distinct points are collinear
+ * (the triangulation would be 1-dimensional) or when the progress callback cancelled;
+ * FL_ERR_NOMEM. Memory: about 40 bytes per point at peak besides the output. */
+fl_status fl_dt2_build(const double *xy, size_t n, const fl_dt2_options *opt, fl_dt2 *out,
+                       fl_error *err);
+
+/* Checks `dt` against the points it was built from, with the exact predicates: index ranges
+ * and duplicate map, counterclockwise nonzero-area triangles, adjacency symmetry, the hull as
+ * the boundary cycle (convex, simple, counterclockwise), the Euler relation
+ * V - E + F = 1 with every distinct point a vertex, and the empty-circle property of every
+ * triangle (locally at each edge, exact and with symbolic perturbation; by Delaunay's lemma
+ * this is global). Returns FL_OK iff all hold, otherwise FL_ERR_ALGORITHM naming the first
+ * violation. O(n). */
+fl_status fl_dt2_verify(const double *xy, const fl_dt2 *dt, fl_error *err);
+
+/* Frees the arrays of dt and zeroes it; safe on a zeroed or already-freed struct. */
+void fl_dt2_free(fl_dt2 *dt);
+
+/* ---- 3D Delaunay triangulation ----
+ * Orientation convention (used by every 3D triangulation here): a tetrahedron (t0, t1, t2, t3) is
+ * positively oriented in the sense of fl_orient3d, i.e. fl_orient3d(p[t0], p[t1], p[t2], p[t3]) > 0:
+ * t3 lies below the plane of t0, t1, t2 seen counterclockwise from above (equivalently the
+ * determinant [t1-t0, t2-t0, t3-t0] is negative). The face opposite corner k, listed as
+ * (t1,t3,t2), (t0,t2,t3), (t0,t3,t1), (t0,t1,t2) for k = 0..3, is counterclockwise seen from
+ * outside the tetrahedron. Every output tetrahedron has nonzero volume, also on degenerate input. */
+
+/* Options of fl_dt3_build; all zero is a safe default. */
+typedef struct fl_dt3_options {
+    fl_progress_fn progress; /* may be NULL; called with stage "delaunay 3d" */
+    void *progress_user;
+    int want_circumcenters; /* nonzero: fill fl_dt3.circumcenters */
+} fl_dt3_options;
+
+/* A Delaunay triangulation of points in 3D. Vertex indices are indices of the input points. */
+typedef struct fl_dt3 {
+    size_t point_count;     /* n as given */
+    size_t unique_count;    /* distinct points; each is a vertex of the triangulation */
+    uint32_t *duplicate_of; /* point_count entries: i when point i is a vertex, else the index of
+                               the vertex with the same coordinates */
+    size_t tet_count;
+    uint32_t *tet; /* 4 point indices per tetrahedron, positively oriented (see above) */
+    uint32_t *adj; /* 4 per tetrahedron: the tetrahedron across the face opposite corner k, or
+                      UINT32_MAX when that face is on the convex hull */
+    size_t hull_face_count;
+    uint32_t *hull_faces;  /* 3 point indices per convex hull face, counterclockwise from outside */
+    double *circumcenters; /* 3 per tetrahedron when asked for, else NULL */
+} fl_dt3;
+
+/* Builds the Delaunay triangulation of the n points xyz[3n] (Bowyer-Watson insertion in a
+ * Hilbert BRIO order). Every decision is exact; ties (cospherical, coplanar points) are broken by
+ * a symbolic perturbation, so the result is always a valid triangulation of the convex hull in
+ * which no point lies strictly inside the circumsphere of any tetrahedron. Duplicate points are
+ * merged (duplicate_of). Fails with FL_ERR_INPUT on NaN/Inf coordinates, more than 2^32-3 points
+ * or fewer than 4 distinct points; FL_ERR_ALGORITHM when all points are coplanar or collinear (the
+ * message says which), or when cancelled; FL_ERR_NOMEM. On failure *out is zeroed. */
+fl_status fl_dt3_build(const double *xyz, size_t n, const fl_dt3_options *opt, fl_dt3 *out,
+                       fl_error *err);
+
+/* Checks dt against the points it was built from with the exact predicates: every tetrahedron is
+ * positively oriented, adjacency is symmetric, the hull is closed and locally convex, the Euler
+ * characteristic of the ball is 1, every distinct point is a vertex, and no point lies inside the
+ * circumsphere of a neighbouring tetrahedron (by the Delaunay lemma, this makes every sphere
+ * empty). FL_OK, or FL_ERR_ALGORITHM naming the first violation. */
+fl_status fl_dt3_verify(const double *xyz, const fl_dt3 *dt, fl_error *err);
+
+void fl_dt3_free(fl_dt3 *dt);
+
+/* ---- Regular (weighted Delaunay) triangulation in 3D ----
+ * A ball is (x, y, z, w) with w its weight, the squared radius (skin paper §2.1). The power
+ * distance of point p to the ball is |p - (x,y,z)|^2 - w. The regular triangulation is the
+ * projection of the lower convex hull of the lifted points (x, y, z, x^2+y^2+z^2-w); a ball whose
+ * lifted point lies above that hull is hidden (redundant) and is not a vertex. */
+
+/* Options of fl_rt3_build; all zero is a safe default. */
+typedef struct fl_rt3_options {
+    fl_progress_fn progress; /* may be NULL; called with stage "regular 3d" */
+    void *progress_user;
+    int want_ortho; /* nonzero: fill fl_rt3.ortho */
+} fl_rt3_options;
+
+typedef struct fl_rt3 {
+    size_t point_count;     /* n as given */
+    size_t vertex_count;    /* balls that are vertices of the triangulation */
+    uint32_t *duplicate_of; /* point_count entries: i unless ball i repeats ball j exactly (same
+                               centre and weight) and j is kept in its place */
+    size_t hidden_count;
+    uint32_t *hidden; /* ascending indices of the hidden balls (not duplicates): a ball at the
+                         centre of a heavier ball is hidden too */
+    size_t tet_count;
+    uint32_t *tet; /* as fl_dt3.tet */
+    uint32_t *adj; /* as fl_dt3.adj */
+    size_t hull_face_count;
+    uint32_t *hull_faces; /* as fl_dt3.hull_faces */
+    double *ortho;        /* 4 per tetrahedron when asked for: centre x, y, z and weight (squared
+                             radius, may be negative) of the ball orthogonal to its 4 balls */
+} fl_rt3;
+
+/* Builds the regular triangulation of the n balls xyzw[4n]. Same contract and failures as
+ * fl_dt3_build (weights must be finite; 4 distinct centres not in a plane are needed). With all
+ * weights equal it is the Delaunay triangulation of the centres. */
+fl_status fl_rt3_build(const double *xyzw, size_t n, const fl_rt3_options *opt, fl_rt3 *out,
+                       fl_error *err);
+
+/* Checks rt against its balls like fl_dt3_verify with the power test instead of the in-sphere
+ * test, and checks that every hidden ball is inside the hull and in conflict with no tetrahedron
+ * containing its centre. FL_OK or FL_ERR_ALGORITHM naming the first violation. */
+fl_status fl_rt3_verify(const double *xyzw, const fl_rt3 *rt, fl_error *err);
+
+void fl_rt3_free(fl_rt3 *rt);
+
 /* end of delaunay */
+
+
+/* ==== graphs ============================================================================== */
+/* (section owned by src/graphs) — the γ-neighbourhood graph and the classical graphs it unifies
+ * (thesis ch. 2.2 and 3). See docs/gamma.md for every parameter regime and the algorithms.
+ *
+ * The γ-neighbourhood N_γ(c0,c1) of k vertices in kD (an edge in 2D, a triangle in 3D) is built
+ * from two balls B0, B1 touching the vertices, of radii r/(1-|c0|) and r/(1-|c1|), where r is the
+ * radius of the smallest ball touching them (Def. 3.1). c0, c1 in [-1,1], |c0| <= |c1|;
+ * c0*c1 > 0: the centres lie on opposite sides of the vertices' hyperplane, c0*c1 < 0: on the same
+ * side; c1 >= 0: the neighbourhood is the union of the open balls, c1 < 0: their intersection.
+ * The open simplex is always part of it; |c| = 1 is an open half-space. */
+
+/* Which γ-graph to build. range == 0: γ(c[0], c[1]) joins the vertices of a simplex when one of
+ * its (at most two, mirror-symmetric) N_γ(c[0],c[1]) is empty (Def. 3.2); needs c in [-1,1] and
+ * |c[0]| <= |c[1]|. range != 0: γ([c[0],c[1]],[c[2],c[3]]) joins them when their largest empty
+ * N_γ(c0',c1') has c0' in [c[0],c[1]] and c1' in [c[2],c[3]] (Def. 3.3); needs
+ * -1 <= c[0] <= c[1] <= 1 and -1 <= c[2] <= c[3] <= 1.
+ * Reductions (§3.2): γ(-1,1) = convex hull, γ([-1,1],[0,1]) = Delaunay (all simplices with an
+ * empty ball; equal to the DT on non-degenerate input), γ(0,0) = Gabriel graph (2D),
+ * γ(b,b) = circle-based β-skeleton, γ(1,1) empty and γ(-1,-1) complete in general position. */
+typedef struct fl_gamma_params {
+    int range;
+    double c[4];
+} fl_gamma_params;
+
+/* How to build it. All zero is a safe default: the fastest exact method for the parameters. */
+typedef enum fl_gamma_method {
+    FL_GAMMA_AUTO = 0,       /* Delaunay-based when c1' >= 0 suffices (Thm. 3.2), output-sensitive
+                                search for non-Delaunay simplices (c1' < 0), brute force last */
+    FL_GAMMA_BRUTE_FORCE = 1 /* Theorem 3.1: every k-subset against every point, O(N^(k+1)) */
+} fl_gamma_method;
+
+typedef struct fl_graph_options {
+    fl_gamma_method method;
+    int want_params;         /* nonzero: also return (c0', c1') of every simplex */
+    fl_progress_fn progress; /* may be NULL */
+    void *progress_user;
+} fl_graph_options;
+
+/* A geometric (hyper-)graph on `vertex_count` input points of dimension `dim`: `simplex_count`
+ * simplices of `simplex_size` input indices each (2: edges, 3: triangles), each sorted
+ * increasingly, the list sorted lexicographically. `params` is NULL or holds (c0', c1') per
+ * simplex (γ-graphs with want_params). Free with fl_graph_free. */
+typedef struct fl_graph {
+    int dim;
+    size_t vertex_count;
+    int simplex_size;
+    size_t simplex_count;
+    uint32_t *simplices;
+    double *params;
+} fl_graph;
+
+void fl_graph_free(fl_graph *graph);
+
+/* Builds a γ-graph of n points (dim 2: edges, dim 3: triangles). coords holds n*dim finite
+ * doubles; the points must be pairwise distinct (duplicates are reported with their indices).
+ * opt may be NULL. Cost: O(N log N) for ranges with c2 >= 0 in non-degenerate sets (Thm. 3.2),
+ * output-sensitive for c1' < 0 in 2D, O(N^(k+1)) brute force otherwise (see docs/gamma.md).
+ * On failure *out is zeroed. FL_ERR_USAGE for bad parameters, FL_ERR_INPUT for bad points. */
+fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma_params *params,
+                         const fl_graph_options *opt, fl_graph *out, fl_error *err);
+
+/* The largest empty neighbourhood of one simplex (k = dim distinct indices) against all n
+ * points, in O(N): *c0, *c1 receive (c0', c1') (Def. 3.3) and the return value is 1; it is 0
+ * when no N_γ of the simplex is empty (another point lies in the closed simplex, or the vertices
+ * are collinear) and -1 on bad arguments. c1' >= 0 exactly when some ball touching the vertices
+ * is empty; this is the quantity constriction's γ-indicator derives from (Def. 5.1/5.2). */
+int fl_gamma_simplex_params(const double *coords, size_t n, int dim, const uint32_t *simplex,
+                            double *c0, double *c1);
+
+/* Parses "c0,c1" (range 0) or "c0,c1,c2,c3" (range 1) into *params and validates it. */
+fl_status fl_gamma_params_parse(const char *text, fl_gamma_params *params, fl_error *err);
+
+/* The classical graphs of thesis §2.2. */
+typedef enum fl_graph_kind {
+    FL_GRAPH_CONVEX_HULL, /* edges (2D) / triangles (3D), = γ(-1,1) */
+    FL_GRAPH_DELAUNAY,    /* edges / triangles with an empty ball, = γ([-1,1],[0,1]) */
+    FL_GRAPH_GABRIEL,     /* edges whose smallest ball is empty (kD, Def. 2.9) */
+    FL_GRAPH_RNG,         /* relative neighbourhood graph (Def. 2.8), edges */
+    FL_GRAPH_EMST,        /* Euclidean minimum spanning tree (Def. 2.5), edges; ties: lower index */
+    FL_GRAPH_NNG,         /* nearest-neighbour graph (Def. 2.4): i joined to its nearest point,
+                             ties to the lowest index */
+    FL_GRAPH_BETA_CIRCLE, /* β_c(b) skeleton (Def. 2.15), 2D only, b in [-1,1] */
+    FL_GRAPH_BETA_LUNE,   /* β_l(b) skeleton (Def. 2.16), 2D only, b in [-1,1] */
+    FL_GRAPH_ALPHA_SHAPE  /* α(a) shape (Def. 2.14): simplices touched by a generalized ball of
+                             radius 1/a that contains no point in its interior (a < 0), that
+                             contains every point (a > 0), or a half-space (a = 0, the hull) */
+} fl_graph_kind;
+
+/* Builds a classical graph; `param` is b for the β-skeletons, a for the α-shape, unused
+ * otherwise. Same input contract as fl_gamma_graph. */
+fl_status fl_classic_graph(const double *coords, size_t n, int dim, fl_graph_kind kind,
+                           double param, fl_graph *out, fl_error *err);
+
+/* Parses "ch", "dt", "gabriel", "rng", "emst", "nng", "beta-circle:B", "beta-lune:B",
+ * "alpha:A" (the CLI's --kind). */
+fl_status fl_graph_kind_parse(const char *text, fl_graph_kind *kind, double *param,
+                              fl_error *err);
+
+/* Writes the graph of the n points `coords` (dimension graph->dim) by the extension of path:
+ * .svg (2D only: points and edges, like the thesis's Figures 3.3-3.6), .obj (v lines, then l
+ * lines for edges or f lines for triangles), .ply (ascii: vertices, then edges or faces).
+ * Atomic: on failure the target is untouched. */
+fl_status fl_write_graph(const char *path, const double *coords, size_t n, const fl_graph *graph,
+                         fl_error *err);
+
+/* end of graphs */
 
 
 #ifdef __cplusplus

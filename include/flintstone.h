@@ -246,7 +246,8 @@ typedef struct fl_mesh_report {
     size_t nonmanifold_edges;     /* edges with three or more incident triangles */
     size_t nonmanifold_vertices;  /* referenced vertices whose triangles form more than one fan
                                    * (edge-connected set around the vertex), e.g. two cones
-                                   * touching at their apex */
+                                   * touching at their apex; a triangle repeating an index has
+                                   * one corner (fan member) per occurrence */
     size_t misoriented_edges;     /* edges used twice in the same direction */
     int closed;                   /* 1 iff faces > 0 and every edge has exactly two triangles */
     int manifold;                 /* 1 iff no non-manifold edge and no non-manifold vertex */

@@ -226,6 +226,8 @@ typedef struct fl_mesh_check_options {
     int skip_self_intersections; /* nonzero: skip the (most expensive) self-intersection search */
     fl_progress_fn progress;     /* optional; stages "topology", "self-intersections" */
     void *progress_user;         /* passed to progress */
+    size_t max_pairs;            /* keep up to this many intersecting triangle pairs in
+                                  * fl_mesh_report.intersecting_pairs (0: keep none) */
 } fl_mesh_check_options;
 
 /* What fl_mesh_check found. Counts refer to the mesh as given (no welding). Release with
@@ -271,6 +273,9 @@ typedef struct fl_mesh_report {
                                    * than it; sharing an edge, overlap beyond the edge (coplanar
                                    * on the same side); sharing all three (duplicate faces),
                                    * always. Degenerate triangles are not tested. */
+    uint32_t *intersecting_pairs; /* 2 per kept pair: triangle indices (lower first), the
+                                   * first options.max_pairs pairs found (NULL when none) */
+    size_t intersecting_pairs_kept; /* number of pairs in intersecting_pairs */
     double bbox[6];               /* min x, y, z, max x, y, z over all vertices (0 when none) */
     double area;                  /* sum of triangle areas (floating point) */
     double volume;                /* enclosed signed volume (divergence theorem), positive when
@@ -309,6 +314,8 @@ typedef struct fl_polygon_report {
                                    * different rings or non-consecutive edges of one ring with
                                    * a common point; consecutive edges overlapping beyond their
                                    * common vertex. Rings with < 3 vertices take no part. */
+    size_t first_crossing[2];     /* when edge_intersections > 0: one such pair of edges, each
+                                   * named by the index of its first vertex (lower first) */
     int *ring_orientation;        /* per ring: +1 counter-clockwise, -1 clockwise, 0 when the
                                    * ring is degenerate; exact turn at the lowest-leftmost vertex,
                                    * which is the ring's orientation when the ring is simple */

@@ -52,8 +52,7 @@ fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
         st = fl_mesh_count_duplicate_vertices(mesh, &report->duplicate_vertices, err);
     }
     if (st == FL_OK && !opt->skip_self_intersections) {
-        st = fl_mesh_count_self_intersections(mesh, opt->progress, opt->progress_user,
-                                              &report->self_intersections, err);
+        st = fl_mesh_find_self_intersections(mesh, opt, report, err);
         report->self_intersections_checked = st == FL_OK;
     }
     if (st != FL_OK) fl_mesh_report_free(report);
@@ -65,5 +64,6 @@ void fl_mesh_report_free(fl_mesh_report *report)
     if (!report) return;
     free(report->component_genus);
     free(report->component_faces);
+    free(report->intersecting_pairs);
     memset(report, 0, sizeof *report);
 }

@@ -29,8 +29,9 @@ int fl_mesh_triangle_degenerate(const fl_mesh *mesh, size_t t);
 int fl_mesh_triangles_intersect(const fl_mesh *mesh, uint32_t a, uint32_t b);
 
 /* Counts pairs of triangles that intersect beyond their shared vertices (the definition of
- * fl_mesh_report.self_intersections). Degenerate triangles are skipped. */
-fl_status fl_mesh_count_self_intersections(const fl_mesh *mesh, fl_progress_fn progress, void *user,
-                                           size_t *count, fl_error *err);
+ * fl_mesh_report.self_intersections) into rep->self_intersections and keeps the first
+ * opt->max_pairs of them in rep->intersecting_pairs. Degenerate triangles are skipped. */
+fl_status fl_mesh_find_self_intersections(const fl_mesh *mesh, const fl_mesh_check_options *opt,
+                                          fl_mesh_report *rep, fl_error *err);
 
 #endif /* FL_MESH_INTERNAL_H */

@@ -45,13 +45,20 @@ int fl_mesh_triangles_intersect(const fl_mesh *mesh, uint32_t ta, uint32_t tb)
 
 typedef struct count_ctx {
     const fl_mesh *mesh;
-    size_t count;
+    size_t count, max_pairs;
+    fl_vec pairs; /* elements of 2 uint32_t, grown as pairs are found */
+    int out_of_memory;
 } count_ctx;
 
 static int count_pair(void *user, uint32_t a, uint32_t b)
 {
     count_ctx *c = user;
-    c->count += (size_t)fl_mesh_triangles_intersect(c->mesh, a, b);
+    if (!fl_mesh_triangles_intersect(c->mesh, a, b)) return 0;
+    if (c->count < c->max_pairs) {
+        uint32_t pair[2] = {a < b ? a : b, a < b ? b : a};
+        if (fl_vec_push(&c->pairs, pair, 1)) return c->out_of_memory = 1;
+    }
+    c->count++;
     return 0;
 }
 
@@ -74,16 +81,16 @@ static size_t proper_triangle_boxes(const fl_mesh *mesh, double *boxes, uint32_t
     return n;
 }
 
-fl_status fl_mesh_count_self_intersections(const fl_mesh *mesh, fl_progress_fn progress, void *user,
-                                           size_t *count, fl_error *err)
+fl_status fl_mesh_find_self_intersections(const fl_mesh *mesh, const fl_mesh_check_options *opt,
+                                          fl_mesh_report *rep, fl_error *err)
 {
-    *count = 0;
-    double *boxes = fl_alloc_array(mesh->triangle_count, 6 * sizeof(double));
-    uint32_t *ids = fl_alloc_array(mesh->triangle_count, sizeof(uint32_t));
+    size_t nt = mesh->triangle_count;
+    double *boxes = fl_alloc_array(nt, 6 * sizeof(double));
+    uint32_t *ids = fl_alloc_array(nt, sizeof(uint32_t));
     if (!boxes || !ids) {
         free(boxes);
         free(ids);
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for self-intersection boxes");
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for self-intersection search");
     }
     size_t n = proper_triangle_boxes(mesh, boxes, ids);
     fl_bvh bvh;
@@ -91,10 +98,17 @@ fl_status fl_mesh_count_self_intersections(const fl_mesh *mesh, fl_progress_fn p
     free(boxes);
     free(ids);
     if (st != FL_OK) return st;
-    count_ctx c = {mesh, 0};
-    if (fl_bvh_self_pairs(&bvh, count_pair, &c, progress, user, "self-intersections"))
-        st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+    count_ctx c = {mesh, 0, opt->max_pairs, {NULL, 0, 0, 0}, 0};
+    fl_vec_init(&c.pairs, 2 * sizeof(uint32_t));
+    if (fl_bvh_self_pairs(&bvh, count_pair, &c, opt->progress, opt->progress_user,
+                          "self-intersections"))
+        st = c.out_of_memory
+                 ? fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory keeping intersecting pairs")
+                 : fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
     fl_bvh_free(&bvh);
-    *count = c.count;
+    rep->self_intersections = c.count;
+    rep->intersecting_pairs_kept = c.pairs.count;
+    rep->intersecting_pairs = c.pairs.count ? fl_vec_release(&c.pairs) : NULL;
+    fl_vec_free(&c.pairs);
     return st;
 }

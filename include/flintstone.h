@@ -92,6 +92,15 @@ typedef struct fl_polygon {
 
 void fl_polygon_free(fl_polygon *polygon);
 
+/* Balls (weighted points): `count` balls, centre and weight interleaved in xyzw (4 doubles a
+ * ball); the weight is the squared radius (it may be negative or zero for weighted points). */
+typedef struct fl_balls {
+    size_t count;
+    double *xyzw;
+} fl_balls;
+
+void fl_balls_free(fl_balls *balls);
+
 /* ==== predicates ========================================================================== */
 /* (section owned by src/predicates; docs/predicates.md)
  *
@@ -188,19 +197,24 @@ int fl_insphere_weighted_sos(const double *a, const double *b, const double *c, 
  * offset (binary) and what is wrong. NaN/Inf coordinates and out-of-range indices are rejected
  * with FL_ERR_INPUT; a file that cannot be opened is FL_ERR_IO. On failure *out is zeroed.
  *
- * Points:   .xyz .xy .txt .csv (whitespace or commas, '#' comments, CRLF, optional header
+ * Points:   .xyz .xy .txt .csv (whitespace, ',' or ';', '#' comments, CRLF, optional header
  *           line; 2 or 3 numbers a line, the same on every line), .ply, .off, .obj (vertices).
+ *           Text numbers follow the C library's LC_NUMERIC ('.' in the "C" locale, which the
+ *           flintstone command never changes).
  * Meshes:   .off, .obj (polygons fan-triangulated; v, v/vt, v//vn, v/vt/vn; negative indices),
  *           .ply (ascii, binary little/big endian; any scalar types, properties in any order),
  *           .stl (ascii and binary; coincident vertices welded exactly).
  * Polygons: .xy (one ring a block; a blank line separates rings; each ring is its own polygon),
- *           .geojson (Polygon, MultiPolygon, Feature, FeatureCollection; holes kept). */
+ *           .geojson or .json (Polygon, MultiPolygon, Feature, FeatureCollection,
+ *           GeometryCollection; holes kept; rings must be closed; other geometries skipped).
+ * See docs/formats.md for every rule. */
 fl_status fl_read_points(const char *path, fl_points *out, fl_error *err);
 fl_status fl_read_mesh(const char *path, fl_mesh *out, fl_error *err);
 fl_status fl_read_polygon(const char *path, fl_polygon *out, fl_error *err);
 
 /* The same readers on a buffer already in memory (for embedding and fuzzing). `format` is an
- * extension without the dot ("ply", "stl", ...); `name` is used in error messages. */
+ * extension without the dot, any case ("ply", "PLY", ...); `name` is used in error messages.
+ * `data` need not be NUL-terminated. */
 fl_status fl_parse_points(const char *format, const char *name, const void *data, size_t size,
                           fl_points *out, fl_error *err);
 fl_status fl_parse_mesh(const char *format, const char *name, const void *data, size_t size,
@@ -209,11 +223,26 @@ fl_status fl_parse_polygon(const char *format, const char *name, const void *dat
                            fl_polygon *out, fl_error *err);
 
 /* Writers choose the format by extension and write atomically (temporary file, then rename):
- * on failure the target is untouched. Points: .xyz .xy .ply. Meshes: .off .obj .ply (binary
- * little endian) .stl (binary). Polygons: .xy .geojson .svg (a picture of the rings). */
+ * on failure the target is untouched. Points: .xyz .txt, .xy (2D only), .ply (2D gets z = 0).
+ * Meshes: .off .obj .ply (binary little endian) .stl (binary). Polygons: .xy (holes come back
+ * as separate polygons), .geojson/.json (exact, holes kept), .svg (a picture of the rings).
+ * Text coordinates are written with %.17g, so reading them back gives the same doubles. */
 fl_status fl_write_points(const char *path, const fl_points *points, fl_error *err);
 fl_status fl_write_mesh(const char *path, const fl_mesh *mesh, fl_error *err);
 fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error *err);
+
+/* Writes a tetrahedral mesh: `point_count` points xyz[3i..3i+2] and `tet_count` tetrahedra of 4
+ * point indices each (all < point_count). By extension: .vtk (legacy ASCII unstructured grid,
+ * opens in ParaView) or TetGen's .node/.ele pair (either name may be given; both files
+ * "<stem>.node" and "<stem>.ele" are written, 0-based indices with "# firstnumber 0" noted).
+ * Written atomically; on failure no target is changed. */
+/* Balls as text, one "x y z w" line each (.xyzw, .txt or .csv; '#' comments, an optional header
+ * line, separators as for points). Read and write like points; NaN/Inf rejected. */
+fl_status fl_read_balls(const char *path, fl_balls *out, fl_error *err);
+fl_status fl_write_balls(const char *path, const fl_balls *balls, fl_error *err);
+
+fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
+                        const uint32_t *tet, size_t tet_count, fl_error *err);
 
 /* end of io */
 
@@ -341,6 +370,155 @@ void fl_polygon_report_free(fl_polygon_report *report);
 
 /* ==== delaunay ============================================================================ */
 /* (section owned by src/delaunay) */
+
+/* ---- 2D Delaunay triangulation (src/delaunay/dt2.c) ----
+ * Every combinatorial decision is made with the exact predicates; ties among cocircular points
+ * are broken by symbolic perturbation (simulation of simplicity, by input index), so the result
+ * is one well-defined triangulation even for grids and points on a circle: all triangles are
+ * counterclockwise with nonzero area, they cover the convex hull of the points exactly, and no
+ * input point lies strictly inside any triangle's circumcircle. Points on the hull boundary
+ * (also collinear ones) are vertices. Expected O(n log n)-ish time, in practice linear after the
+ * spatial sort (see docs/delaunay.md). */
+
+/* Options; all zero is the default (no progress reports, no circumcenters). */
+typedef struct fl_dt2_options {
+    fl_progress_fn progress; /* called during insertion; may be NULL */
+    void *progress_user;
+    int want_circumcenters; /* nonzero: fill fl_dt2.circumcenters */
+} fl_dt2_options;
+
+/* A 2D Delaunay triangulation. Vertex indices refer to the input points; a point with an exact
+ * duplicate earlier in the input is represented by that earlier point (duplicate_of). Triangle
+ * t has corners tri[3t..3t+2] in counterclockwise order; adj[3t+k] is the triangle across the
+ * edge opposite corner k (the edge tri[3t+(k+1)%3] -> tri[3t+(k+2)%3]), or UINT32_MAX when that
+ * edge is on the convex hull. triangle_count = 2*unique_count - 2 - hull_count. */
+typedef struct fl_dt2 {
+    size_t point_count;     /* input points */
+    size_t unique_count;    /* distinct points (duplicates merged) */
+    uint32_t *duplicate_of; /* point_count entries: the first input point with identical
+                               coordinates (-0.0 == +0.0); itself when it is the first */
+    size_t triangle_count;
+    uint32_t *tri; /* 3 per triangle, counterclockwise */
+    uint32_t *adj; /* 3 per triangle: neighbour across the edge opposite corner k or UINT32_MAX */
+    size_t hull_count;
+    uint32_t *hull;        /* hull_count vertices of the convex hull, counterclockwise, including
+                              points in the relative interior of hull edges */
+    double *circumcenters; /* 2 per triangle when requested, else NULL (floating point; may be
+                              huge or infinite for nearly flat triangles) */
+} fl_dt2;
+
+/* Builds the Delaunay triangulation of the n points xy[2i], xy[2i+1]. `opt` may be NULL.
+ * On success *out holds the result (free with fl_dt2_free). Errors (then *out is zeroed):
+ * FL_ERR_USAGE for NULL buffers; FL_ERR_INPUT for NaN/Inf coordinates, fewer than 3 distinct
+ * points, or more than 2^29 points; FL_ERR_ALGORITHM when all distinct points are collinear
+ * (the triangulation would be 1-dimensional) or when the progress callback cancelled;
+ * FL_ERR_NOMEM. Memory: about 40 bytes per point at peak besides the output. */
+fl_status fl_dt2_build(const double *xy, size_t n, const fl_dt2_options *opt, fl_dt2 *out,
+                       fl_error *err);
+
+/* Checks `dt` against the points it was built from, with the exact predicates: index ranges
+ * and duplicate map, counterclockwise nonzero-area triangles, adjacency symmetry, the hull as
+ * the boundary cycle (convex, simple, counterclockwise), the Euler relation
+ * V - E + F = 1 with every distinct point a vertex, and the empty-circle property of every
+ * triangle (locally at each edge, exact and with symbolic perturbation; by Delaunay's lemma
+ * this is global). Returns FL_OK iff all hold, otherwise FL_ERR_ALGORITHM naming the first
+ * violation. O(n). */
+fl_status fl_dt2_verify(const double *xy, const fl_dt2 *dt, fl_error *err);
+
+/* Frees the arrays of dt and zeroes it; safe on a zeroed or already-freed struct. */
+void fl_dt2_free(fl_dt2 *dt);
+
+/* ---- 3D Delaunay triangulation ----
+ * Orientation convention (used by every 3D triangulation here): a tetrahedron (t0, t1, t2, t3) is
+ * positively oriented in the sense of fl_orient3d, i.e. fl_orient3d(p[t0], p[t1], p[t2], p[t3]) > 0:
+ * t3 lies below the plane of t0, t1, t2 seen counterclockwise from above (equivalently the
+ * determinant [t1-t0, t2-t0, t3-t0] is negative). The face opposite corner k, listed as
+ * (t1,t3,t2), (t0,t2,t3), (t0,t3,t1), (t0,t1,t2) for k = 0..3, is counterclockwise seen from
+ * outside the tetrahedron. Every output tetrahedron has nonzero volume, also on degenerate input. */
+
+/* Options of fl_dt3_build; all zero is a safe default. */
+typedef struct fl_dt3_options {
+    fl_progress_fn progress; /* may be NULL; called with stage "delaunay 3d" */
+    void *progress_user;
+    int want_circumcenters; /* nonzero: fill fl_dt3.circumcenters */
+} fl_dt3_options;
+
+/* A Delaunay triangulation of points in 3D. Vertex indices are indices of the input points. */
+typedef struct fl_dt3 {
+    size_t point_count;     /* n as given */
+    size_t unique_count;    /* distinct points; each is a vertex of the triangulation */
+    uint32_t *duplicate_of; /* point_count entries: i when point i is a vertex, else the index of
+                               the vertex with the same coordinates */
+    size_t tet_count;
+    uint32_t *tet; /* 4 point indices per tetrahedron, positively oriented (see above) */
+    uint32_t *adj; /* 4 per tetrahedron: the tetrahedron across the face opposite corner k, or
+                      UINT32_MAX when that face is on the convex hull */
+    size_t hull_face_count;
+    uint32_t *hull_faces;  /* 3 point indices per convex hull face, counterclockwise from outside */
+    double *circumcenters; /* 3 per tetrahedron when asked for, else NULL */
+} fl_dt3;
+
+/* Builds the Delaunay triangulation of the n points xyz[3n] (Bowyer-Watson insertion in a
+ * Hilbert BRIO order). Every decision is exact; ties (cospherical, coplanar points) are broken by
+ * a symbolic perturbation, so the result is always a valid triangulation of the convex hull in
+ * which no point lies strictly inside the circumsphere of any tetrahedron. Duplicate points are
+ * merged (duplicate_of). Fails with FL_ERR_INPUT on NaN/Inf coordinates, more than 2^32-3 points
+ * or fewer than 4 distinct points; FL_ERR_ALGORITHM when all points are coplanar or collinear (the
+ * message says which), or when cancelled; FL_ERR_NOMEM. On failure *out is zeroed. */
+fl_status fl_dt3_build(const double *xyz, size_t n, const fl_dt3_options *opt, fl_dt3 *out,
+                       fl_error *err);
+
+/* Checks dt against the points it was built from with the exact predicates: every tetrahedron is
+ * positively oriented, adjacency is symmetric, the hull is closed and locally convex, the Euler
+ * characteristic of the ball is 1, every distinct point is a vertex, and no point lies inside the
+ * circumsphere of a neighbouring tetrahedron (by the Delaunay lemma, this makes every sphere
+ * empty). FL_OK, or FL_ERR_ALGORITHM naming the first violation. */
+fl_status fl_dt3_verify(const double *xyz, const fl_dt3 *dt, fl_error *err);
+
+void fl_dt3_free(fl_dt3 *dt);
+
+/* ---- Regular (weighted Delaunay) triangulation in 3D ----
+ * A ball is (x, y, z, w) with w its weight, the squared radius (skin paper §2.1). The power
+ * distance of point p to the ball is |p - (x,y,z)|^2 - w. The regular triangulation is the
+ * projection of the lower convex hull of the lifted points (x, y, z, x^2+y^2+z^2-w); a ball whose
+ * lifted point lies above that hull is hidden (redundant) and is not a vertex. */
+
+/* Options of fl_rt3_build; all zero is a safe default. */
+typedef struct fl_rt3_options {
+    fl_progress_fn progress; /* may be NULL; called with stage "regular 3d" */
+    void *progress_user;
+    int want_ortho; /* nonzero: fill fl_rt3.ortho */
+} fl_rt3_options;
+
+typedef struct fl_rt3 {
+    size_t point_count;     /* n as given */
+    size_t vertex_count;    /* balls that are vertices of the triangulation */
+    uint32_t *duplicate_of; /* point_count entries: i unless ball i repeats ball j exactly (same
+                               centre and weight) and j is kept in its place */
+    size_t hidden_count;
+    uint32_t *hidden; /* ascending indices of the hidden balls (not duplicates): a ball at the
+                         centre of a heavier ball is hidden too */
+    size_t tet_count;
+    uint32_t *tet; /* as fl_dt3.tet */
+    uint32_t *adj; /* as fl_dt3.adj */
+    size_t hull_face_count;
+    uint32_t *hull_faces; /* as fl_dt3.hull_faces */
+    double *ortho;        /* 4 per tetrahedron when asked for: centre x, y, z and weight (squared
+                             radius, may be negative) of the ball orthogonal to its 4 balls */
+} fl_rt3;
+
+/* Builds the regular triangulation of the n balls xyzw[4n]. Same contract and failures as
+ * fl_dt3_build (weights must be finite; 4 distinct centres not in a plane are needed). With all
+ * weights equal it is the Delaunay triangulation of the centres. */
+fl_status fl_rt3_build(const double *xyzw, size_t n, const fl_rt3_options *opt, fl_rt3 *out,
+                       fl_error *err);
+
+/* Checks rt against its balls like fl_dt3_verify with the power test instead of the in-sphere
+ * test, and checks that every hidden ball is inside the hull and in conflict with no tetrahedron
+ * containing its centre. FL_OK or FL_ERR_ALGORITHM naming the first violation. */
+fl_status fl_rt3_verify(const double *xyzw, const fl_rt3 *rt, fl_error *err);
+
+void fl_rt3_free(fl_rt3 *rt);
 
 /* end of delaunay */
 

@@ -48,6 +48,7 @@ int fl_vec_reserve(fl_vec *v, size_t count)
 
 int fl_vec_push(fl_vec *v, const void *src, size_t n)
 {
+    if (n == 0) return 0; /* memcpy from a NULL src of length 0 is still undefined */
     if (n > SIZE_MAX - v->count) return -1;
     if (fl_vec_reserve(v, v->count + n)) return -1;
     char *dst = (char *)v->data + v->count * v->elem;
@@ -100,4 +101,11 @@ void fl_polygon_free(fl_polygon *polygon)
     free(polygon->ring_start);
     free(polygon->polygon_start);
     memset(polygon, 0, sizeof *polygon);
+}
+
+void fl_balls_free(fl_balls *balls)
+{
+    if (!balls) return;
+    free(balls->xyzw);
+    memset(balls, 0, sizeof *balls);
 }

@@ -27,6 +27,11 @@ fl_status fl_off_write(FILE *fp, const fl_mesh *mesh);
 fl_status fl_obj_write(FILE *fp, const fl_mesh *mesh);
 
 /* Text points and polygons (src/io/text_points.c, xy_polygon.c, geojson.c, svg.c). */
+/* The text point reader with a choice of how many numbers a line may hold (all lines the same;
+ * min_cols..max_cols, at most FL_TEXT_MAX_COLUMNS); out->dim is the count found. */
+#define FL_TEXT_MAX_COLUMNS 4
+fl_status fl_text_columns_parse(const char *name, const char *data, size_t size, int min_cols,
+                                int max_cols, fl_points *out, fl_error *err);
 fl_status fl_text_points_parse(const char *name, const char *data, size_t size, fl_points *out,
                                fl_error *err);
 fl_status fl_xy_polygon_parse(const char *name, const char *data, size_t size, fl_polygon *out,

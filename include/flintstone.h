@@ -255,8 +255,6 @@ typedef struct fl_mesh_check_options {
     int skip_self_intersections; /* nonzero: skip the (most expensive) self-intersection search */
     fl_progress_fn progress;     /* optional; stages "topology", "self-intersections" */
     void *progress_user;         /* passed to progress */
-    size_t max_pairs;            /* keep up to this many intersecting triangle pairs in
-                                  * fl_mesh_report.intersecting_pairs (0: keep none) */
 } fl_mesh_check_options;
 
 /* What fl_mesh_check found. Counts refer to the mesh as given (no welding). Release with
@@ -302,9 +300,6 @@ typedef struct fl_mesh_report {
                                    * than it; sharing an edge, overlap beyond the edge (coplanar
                                    * on the same side); sharing all three (duplicate faces),
                                    * always. Degenerate triangles are not tested. */
-    uint32_t *intersecting_pairs; /* 2 per kept pair: triangle indices (lower first), the
-                                   * first options.max_pairs pairs found (NULL when none) */
-    size_t intersecting_pairs_kept; /* number of pairs in intersecting_pairs */
     double bbox[6];               /* min x, y, z, max x, y, z over all vertices (0 when none) */
     double area;                  /* sum of triangle areas (floating point) */
     double volume;                /* enclosed signed volume (divergence theorem), positive when
@@ -323,6 +318,23 @@ fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
                         fl_mesh_report *report, fl_error *err);
 
 void fl_mesh_report_free(fl_mesh_report *report);
+
+/* Self-intersecting triangle pairs, as counted by fl_mesh_check. */
+typedef struct fl_mesh_pairs {
+    size_t total;    /* number of intersecting pairs (= fl_mesh_report.self_intersections) */
+    size_t count;    /* pairs kept in `pairs`: min(total, max_pairs) */
+    uint32_t *pairs; /* 2 per kept pair: triangle indices, lower first (NULL when count = 0) */
+} fl_mesh_pairs;
+
+/* Finds the self-intersecting triangle pairs (definition: fl_mesh_report.self_intersections)
+ * and keeps the first max_pairs found (in a deterministic order); so a caller can show where a
+ * mesh intersects itself. `progress` may be NULL. Release with fl_mesh_pairs_free. Errors as
+ * fl_mesh_check; on failure *out is zeroed. */
+fl_status fl_mesh_self_intersections(const fl_mesh *mesh, size_t max_pairs,
+                                     fl_progress_fn progress, void *progress_user,
+                                     fl_mesh_pairs *out, fl_error *err);
+
+void fl_mesh_pairs_free(fl_mesh_pairs *pairs);
 
 /* Welds exactly coincident vertices: out receives the distinct vertex positions (==, so -0
  * equals +0) in order of first occurrence and mesh's triangles re-indexed to them, in the same

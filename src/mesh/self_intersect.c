@@ -2,6 +2,7 @@
  * triangles, each decided exactly. Pairs that share vertices are judged by what they have in
  * common beyond the shared vertices (see fl_mesh_report.self_intersections). */
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/core.h"
 #include "mesh/bvh.h"
@@ -81,9 +82,11 @@ static size_t proper_triangle_boxes(const fl_mesh *mesh, double *boxes, uint32_t
     return n;
 }
 
-fl_status fl_mesh_find_self_intersections(const fl_mesh *mesh, const fl_mesh_check_options *opt,
-                                          fl_mesh_report *rep, fl_error *err)
+fl_status fl_mesh_find_self_intersections(const fl_mesh *mesh, size_t max_pairs,
+                                          fl_progress_fn progress, void *user, fl_mesh_pairs *out,
+                                          fl_error *err)
 {
+    memset(out, 0, sizeof *out);
     size_t nt = mesh->triangle_count;
     double *boxes = fl_alloc_array(nt, 6 * sizeof(double));
     uint32_t *ids = fl_alloc_array(nt, sizeof(uint32_t));
@@ -98,17 +101,37 @@ fl_status fl_mesh_find_self_intersections(const fl_mesh *mesh, const fl_mesh_che
     free(boxes);
     free(ids);
     if (st != FL_OK) return st;
-    count_ctx c = {mesh, 0, opt->max_pairs, {NULL, 0, 0, 0}, 0};
+    count_ctx c = {mesh, 0, max_pairs, {NULL, 0, 0, 0}, 0};
     fl_vec_init(&c.pairs, 2 * sizeof(uint32_t));
-    if (fl_bvh_self_pairs(&bvh, count_pair, &c, opt->progress, opt->progress_user,
-                          "self-intersections"))
+    if (fl_bvh_self_pairs(&bvh, count_pair, &c, progress, user, "self-intersections"))
         st = c.out_of_memory
                  ? fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory keeping intersecting pairs")
                  : fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
     fl_bvh_free(&bvh);
-    rep->self_intersections = c.count;
-    rep->intersecting_pairs_kept = c.pairs.count;
-    rep->intersecting_pairs = c.pairs.count ? fl_vec_release(&c.pairs) : NULL;
+    if (st != FL_OK) {
+        fl_vec_free(&c.pairs);
+        return st;
+    }
+    out->total = c.count;
+    out->count = c.pairs.count;
+    out->pairs = c.pairs.count ? fl_vec_release(&c.pairs) : NULL;
     fl_vec_free(&c.pairs);
-    return st;
+    return FL_OK;
+}
+
+fl_status fl_mesh_self_intersections(const fl_mesh *mesh, size_t max_pairs, fl_progress_fn progress,
+                                     void *progress_user, fl_mesh_pairs *out, fl_error *err)
+{
+    if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "no output given");
+    memset(out, 0, sizeof *out);
+    fl_status st = fl_mesh_validate(mesh, err);
+    if (st != FL_OK) return st;
+    return fl_mesh_find_self_intersections(mesh, max_pairs, progress, progress_user, out, err);
+}
+
+void fl_mesh_pairs_free(fl_mesh_pairs *pairs)
+{
+    if (!pairs) return;
+    free(pairs->pairs);
+    memset(pairs, 0, sizeof *pairs);
 }

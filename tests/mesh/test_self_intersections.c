@@ -63,30 +63,30 @@ static void test_interpenetrating_cubes_match_brute_force_and_oracle(void)
 static void test_kept_pairs_are_the_intersecting_pairs(void)
 {
     fl_mesh m = fx_concat(fx_cube(0, 0, 0, 1), fx_cube(0.5, 0.25, 0.75, 1));
-    fl_mesh_check_options opt = {0};
-    fl_mesh_report r;
+    fl_mesh_pairs p;
     fl_error err;
-    opt.max_pairs = 3;
-    CHECK_STATUS(fl_mesh_check(&m, &opt, &r, &err), FL_OK, &err);
-    CHECK_EQ_INT(r.intersecting_pairs_kept, 3);
-    for (size_t i = 0; i < r.intersecting_pairs_kept; i++)
-        CHECK(r.intersecting_pairs[2 * i] < r.intersecting_pairs[2 * i + 1] &&
-              fl_mesh_triangles_intersect(&m, r.intersecting_pairs[2 * i],
-                                          r.intersecting_pairs[2 * i + 1]));
-    fl_mesh_report_free(&r);
-    opt.max_pairs = (size_t)-1; /* keep all: exactly the brute-force set, each once */
-    CHECK_STATUS(fl_mesh_check(&m, &opt, &r, &err), FL_OK, &err);
-    CHECK_EQ_INT(r.intersecting_pairs_kept, r.self_intersections);
+    CHECK_STATUS(fl_mesh_self_intersections(&m, 3, NULL, NULL, &p, &err), FL_OK, &err);
+    CHECK_EQ_INT(p.count, 3);
+    CHECK_EQ_INT(p.total, count_by_check(&m));
+    for (size_t i = 0; i < p.count; i++)
+        CHECK(p.pairs[2 * i] < p.pairs[2 * i + 1] &&
+              fl_mesh_triangles_intersect(&m, p.pairs[2 * i], p.pairs[2 * i + 1]));
+    fl_mesh_pairs_free(&p);
+    /* keep all: exactly the brute-force set, each pair once */
+    CHECK_STATUS(fl_mesh_self_intersections(&m, (size_t)-1, NULL, NULL, &p, &err), FL_OK, &err);
+    CHECK_EQ_INT(p.count, p.total);
     int seen[24][24] = {{0}};
-    for (size_t i = 0; i < r.intersecting_pairs_kept; i++)
-        seen[r.intersecting_pairs[2 * i]][r.intersecting_pairs[2 * i + 1]]++;
+    for (size_t i = 0; i < p.count; i++)
+        seen[p.pairs[2 * i]][p.pairs[2 * i + 1]]++;
     int ok = 1;
     for (uint32_t a = 0; a < 24; a++)
         for (uint32_t b = a + 1; b < 24; b++)
             ok &= seen[a][b] == fl_mesh_triangles_intersect(&m, a, b);
     CHECK(ok);
-    fl_mesh_report_free(&r);
-    CHECK(r.intersecting_pairs == NULL);
+    fl_mesh_pairs_free(&p);
+    CHECK(p.pairs == NULL);
+    m.tri[0] = 99;
+    CHECK_STATUS(fl_mesh_self_intersections(&m, 3, NULL, NULL, &p, &err), FL_ERR_INPUT, &err);
     fl_mesh_free(&m);
 }
 

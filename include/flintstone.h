@@ -340,7 +340,8 @@ void fl_mesh_pairs_free(fl_mesh_pairs *pairs);
  * equals +0) in order of first occurrence and mesh's triangles re-indexed to them, in the same
  * order (triangles that become degenerate are kept; fl_mesh_check counts them). Vertices no
  * triangle uses are kept too. O(V + T) expected. Release out with fl_mesh_free. Errors:
- * FL_ERR_INPUT for an index >= vertex_count, FL_ERR_NOMEM; on failure *out is zeroed. */
+ * FL_ERR_INPUT for an index >= vertex_count or a non-finite coordinate, FL_ERR_NOMEM; on
+ * failure *out is zeroed. */
 fl_status fl_mesh_weld(const fl_mesh *mesh, fl_mesh *out, fl_error *err);
 
 /* What fl_polygon_check found. Release with fl_polygon_report_free. */
@@ -370,9 +371,10 @@ typedef struct fl_polygon_report {
 
 /* Checks planar polygons: simplicity, ring orientation, areas, holes inside their outer ring.
  * O(n log n) for n vertices when few edges are near each other, plus O(outer ring size) per
- * hole for holes_inside. An all-zero polygon (no vertices, rings or polygons) is valid. On success *report must be
- * released with fl_polygon_report_free. Errors: FL_ERR_INPUT for ring/polygon ranges that do
- * not fit the arrays or non-finite coordinates; FL_ERR_NOMEM. On failure *report is zeroed. */
+ * hole for holes_inside. An all-zero polygon (no vertices, rings or polygons) is valid.
+ * On success *report must be released with fl_polygon_report_free. Errors: FL_ERR_INPUT for
+ * ring/polygon ranges that do not fit the arrays or non-finite coordinates; FL_ERR_NOMEM.
+ * On failure *report is zeroed. */
 fl_status fl_polygon_check(const fl_polygon *polygon, fl_polygon_report *report, fl_error *err);
 
 void fl_polygon_report_free(fl_polygon_report *report);

@@ -275,7 +275,8 @@ typedef struct fl_mesh_report {
     size_t nonmanifold_edges;     /* edges with three or more incident triangles */
     size_t nonmanifold_vertices;  /* referenced vertices whose triangles form more than one fan
                                    * (edge-connected set around the vertex), e.g. two cones
-                                   * touching at their apex */
+                                   * touching at their apex; a triangle repeating an index has
+                                   * one corner (fan member) per occurrence */
     size_t misoriented_edges;     /* edges used twice in the same direction */
     int closed;                   /* 1 iff faces > 0 and every edge has exactly two triangles */
     int manifold;                 /* 1 iff no non-manifold edge and no non-manifold vertex */
@@ -318,11 +319,29 @@ fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
 
 void fl_mesh_report_free(fl_mesh_report *report);
 
+/* Self-intersecting triangle pairs, as counted by fl_mesh_check. */
+typedef struct fl_mesh_pairs {
+    size_t total;    /* number of intersecting pairs (= fl_mesh_report.self_intersections) */
+    size_t count;    /* pairs kept in `pairs`: min(total, max_pairs) */
+    uint32_t *pairs; /* 2 per kept pair: triangle indices, lower first (NULL when count = 0) */
+} fl_mesh_pairs;
+
+/* Finds the self-intersecting triangle pairs (definition: fl_mesh_report.self_intersections)
+ * and keeps the first max_pairs found (in a deterministic order); so a caller can show where a
+ * mesh intersects itself. `progress` may be NULL. Release with fl_mesh_pairs_free. Errors as
+ * fl_mesh_check; on failure *out is zeroed. */
+fl_status fl_mesh_self_intersections(const fl_mesh *mesh, size_t max_pairs,
+                                     fl_progress_fn progress, void *progress_user,
+                                     fl_mesh_pairs *out, fl_error *err);
+
+void fl_mesh_pairs_free(fl_mesh_pairs *pairs);
+
 /* Welds exactly coincident vertices: out receives the distinct vertex positions (==, so -0
  * equals +0) in order of first occurrence and mesh's triangles re-indexed to them, in the same
  * order (triangles that become degenerate are kept; fl_mesh_check counts them). Vertices no
  * triangle uses are kept too. O(V + T) expected. Release out with fl_mesh_free. Errors:
- * FL_ERR_INPUT for an index >= vertex_count, FL_ERR_NOMEM; on failure *out is zeroed. */
+ * FL_ERR_INPUT for an index >= vertex_count or a non-finite coordinate, FL_ERR_NOMEM; on
+ * failure *out is zeroed. */
 fl_status fl_mesh_weld(const fl_mesh *mesh, fl_mesh *out, fl_error *err);
 
 /* What fl_polygon_check found. Release with fl_polygon_report_free. */
@@ -337,6 +356,8 @@ typedef struct fl_polygon_report {
                                    * different rings or non-consecutive edges of one ring with
                                    * a common point; consecutive edges overlapping beyond their
                                    * common vertex. Rings with < 3 vertices take no part. */
+    size_t first_crossing[2];     /* when edge_intersections > 0: one such pair of edges, each
+                                   * named by the index of its first vertex (lower first) */
     int *ring_orientation;        /* per ring: +1 counter-clockwise, -1 clockwise, 0 when the
                                    * ring is degenerate; exact turn at the lowest-leftmost vertex,
                                    * which is the ring's orientation when the ring is simple */
@@ -350,9 +371,10 @@ typedef struct fl_polygon_report {
 
 /* Checks planar polygons: simplicity, ring orientation, areas, holes inside their outer ring.
  * O(n log n) for n vertices when few edges are near each other, plus O(outer ring size) per
- * hole for holes_inside. An all-zero polygon (no vertices, rings or polygons) is valid. On success *report must be
- * released with fl_polygon_report_free. Errors: FL_ERR_INPUT for ring/polygon ranges that do
- * not fit the arrays or non-finite coordinates; FL_ERR_NOMEM. On failure *report is zeroed. */
+ * hole for holes_inside. An all-zero polygon (no vertices, rings or polygons) is valid.
+ * On success *report must be released with fl_polygon_report_free. Errors: FL_ERR_INPUT for
+ * ring/polygon ranges that do not fit the arrays or non-finite coordinates; FL_ERR_NOMEM.
+ * On failure *report is zeroed. */
 fl_status fl_polygon_check(const fl_polygon *polygon, fl_polygon_report *report, fl_error *err);
 
 void fl_polygon_report_free(fl_polygon_report *report);

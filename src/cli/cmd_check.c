@@ -94,7 +94,7 @@ static void mesh_human(const char *path, const fl_mesh_report *r)
         printf("not checked\n");
     if (r->duplicate_vertices && r->self_intersections)
         printf("  note: vertices at equal positions are distinct vertices here, so triangles of\n"
-               "  an unwelded mesh (a soup, as STL is) touch and count as intersecting\n");
+               "  an unwelded triangle soup touch and count as intersecting\n");
     printf("  area %.6g", r->area);
     if (!isnan(r->volume)) printf(", volume %.6g", r->volume);
     printf("\n");

@@ -197,19 +197,24 @@ int fl_insphere_weighted_sos(const double *a, const double *b, const double *c, 
  * offset (binary) and what is wrong. NaN/Inf coordinates and out-of-range indices are rejected
  * with FL_ERR_INPUT; a file that cannot be opened is FL_ERR_IO. On failure *out is zeroed.
  *
- * Points:   .xyz .xy .txt .csv (whitespace or commas, '#' comments, CRLF, optional header
+ * Points:   .xyz .xy .txt .csv (whitespace, ',' or ';', '#' comments, CRLF, optional header
  *           line; 2 or 3 numbers a line, the same on every line), .ply, .off, .obj (vertices).
+ *           Text numbers follow the C library's LC_NUMERIC ('.' in the "C" locale, which the
+ *           flintstone command never changes).
  * Meshes:   .off, .obj (polygons fan-triangulated; v, v/vt, v//vn, v/vt/vn; negative indices),
  *           .ply (ascii, binary little/big endian; any scalar types, properties in any order),
  *           .stl (ascii and binary; coincident vertices welded exactly).
  * Polygons: .xy (one ring a block; a blank line separates rings; each ring is its own polygon),
- *           .geojson (Polygon, MultiPolygon, Feature, FeatureCollection; holes kept). */
+ *           .geojson or .json (Polygon, MultiPolygon, Feature, FeatureCollection,
+ *           GeometryCollection; holes kept; rings must be closed; other geometries skipped).
+ * See docs/formats.md for every rule. */
 fl_status fl_read_points(const char *path, fl_points *out, fl_error *err);
 fl_status fl_read_mesh(const char *path, fl_mesh *out, fl_error *err);
 fl_status fl_read_polygon(const char *path, fl_polygon *out, fl_error *err);
 
 /* The same readers on a buffer already in memory (for embedding and fuzzing). `format` is an
- * extension without the dot ("ply", "stl", ...); `name` is used in error messages. */
+ * extension without the dot, any case ("ply", "PLY", ...); `name` is used in error messages.
+ * `data` need not be NUL-terminated. */
 fl_status fl_parse_points(const char *format, const char *name, const void *data, size_t size,
                           fl_points *out, fl_error *err);
 fl_status fl_parse_mesh(const char *format, const char *name, const void *data, size_t size,
@@ -218,8 +223,10 @@ fl_status fl_parse_polygon(const char *format, const char *name, const void *dat
                            fl_polygon *out, fl_error *err);
 
 /* Writers choose the format by extension and write atomically (temporary file, then rename):
- * on failure the target is untouched. Points: .xyz .xy .ply. Meshes: .off .obj .ply (binary
- * little endian) .stl (binary). Polygons: .xy .geojson .svg (a picture of the rings). */
+ * on failure the target is untouched. Points: .xyz .txt, .xy (2D only), .ply (2D gets z = 0).
+ * Meshes: .off .obj .ply (binary little endian) .stl (binary). Polygons: .xy (holes come back
+ * as separate polygons), .geojson/.json (exact, holes kept), .svg (a picture of the rings).
+ * Text coordinates are written with %.17g, so reading them back gives the same doubles. */
 fl_status fl_write_points(const char *path, const fl_points *points, fl_error *err);
 fl_status fl_write_mesh(const char *path, const fl_mesh *mesh, fl_error *err);
 fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error *err);
@@ -242,6 +249,113 @@ fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
 
 /* ==== mesh ================================================================================ */
 /* (section owned by src/mesh) */
+
+/* Options of fl_mesh_check. All zero is the default: every check runs, no progress reports. */
+typedef struct fl_mesh_check_options {
+    int skip_self_intersections; /* nonzero: skip the (most expensive) self-intersection search */
+    fl_progress_fn progress;     /* optional; stages "topology", "self-intersections" */
+    void *progress_user;         /* passed to progress */
+} fl_mesh_check_options;
+
+/* What fl_mesh_check found. Counts refer to the mesh as given (no welding). Release with
+ * fl_mesh_report_free. Definitions:
+ *  - A vertex is *referenced* when some triangle uses it; unreferenced vertices are counted
+ *    in unreferenced_vertices and take part in nothing else (not in components, not in euler).
+ *  - Edges are the undirected vertex pairs {a,b} used by triangle sides. A triangle with a
+ *    repeated index contributes its sides as they are (a side {a,a} is an edge of its own).
+ *  - Components are maximal sets of triangles connected through shared vertices (the usual
+ *    MeshLab notion; two cubes touching at one vertex index are one component). Numbered in
+ *    order of their lowest triangle index. */
+typedef struct fl_mesh_report {
+    size_t vertices;              /* mesh->vertex_count */
+    size_t faces;                 /* mesh->triangle_count */
+    size_t edges;                 /* distinct undirected edges */
+    size_t unreferenced_vertices; /* vertices no triangle uses */
+    size_t boundary_edges;        /* edges with exactly one incident triangle */
+    size_t nonmanifold_edges;     /* edges with three or more incident triangles */
+    size_t nonmanifold_vertices;  /* referenced vertices whose triangles form more than one fan
+                                   * (edge-connected set around the vertex), e.g. two cones
+                                   * touching at their apex */
+    size_t misoriented_edges;     /* edges used twice in the same direction */
+    int closed;                   /* 1 iff faces > 0 and every edge has exactly two triangles */
+    int manifold;                 /* 1 iff no non-manifold edge and no non-manifold vertex */
+    int oriented;                 /* 1 iff no directed edge (a->b) is used by two triangles, i.e.
+                                   * every two-triangle edge is used once in each direction */
+    long long euler;              /* V - E + F over referenced vertices, edges and triangles */
+    size_t components;            /* number of components (0 for a mesh without triangles) */
+    long long *component_genus;   /* per component: (2 - (V-E+F)) / 2 when the component is
+                                   * closed, manifold and oriented, else -1 */
+    size_t *component_faces;      /* per component: its number of triangles */
+    long long genus;              /* sum of component_genus when none is -1, else -1 */
+    size_t degenerate_faces;      /* triangles with a repeated index or three collinear vertices
+                                   * (decided exactly: the cross product is the zero vector) */
+    size_t duplicate_vertices;    /* vertices whose coordinates equal (==, so -0 equals +0) those
+                                   * of a lower-indexed vertex */
+    int self_intersections_checked; /* 0 when skipped by the options */
+    size_t self_intersections;    /* pairs of non-degenerate triangles that intersect beyond the
+                                   * vertices they share, decided exactly on the closed
+                                   * triangles: sharing no vertex index, any common point counts
+                                   * (touching too); sharing one vertex, any common point other
+                                   * than it; sharing an edge, overlap beyond the edge (coplanar
+                                   * on the same side); sharing all three (duplicate faces),
+                                   * always. Degenerate triangles are not tested. */
+    double bbox[6];               /* min x, y, z, max x, y, z over all vertices (0 when none) */
+    double area;                  /* sum of triangle areas (floating point) */
+    double volume;                /* enclosed signed volume (divergence theorem), positive when
+                                   * triangles are counter-clockwise seen from outside; NaN
+                                   * unless the mesh is closed and oriented */
+} fl_mesh_report;
+
+/* Checks a triangle mesh: topology (edges, boundary, manifoldness, orientation, components,
+ * Euler characteristic, genus), degeneracies, duplicate vertices, self-intersections and the
+ * measures (bbox, area, volume). Runs in O(n log n) expected time for n triangles.
+ * `opt` may be NULL (defaults). On success *report is filled and must be released with
+ * fl_mesh_report_free. Errors: FL_ERR_INPUT for an index >= vertex_count or a non-finite
+ * coordinate, FL_ERR_INPUT when 3 * triangle_count >= 2^32 - 1, FL_ERR_NOMEM,
+ * FL_ERR_ALGORITHM "cancelled" when progress asked to stop. On failure *report is zeroed. */
+fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
+                        fl_mesh_report *report, fl_error *err);
+
+void fl_mesh_report_free(fl_mesh_report *report);
+
+/* Welds exactly coincident vertices: out receives the distinct vertex positions (==, so -0
+ * equals +0) in order of first occurrence and mesh's triangles re-indexed to them, in the same
+ * order (triangles that become degenerate are kept; fl_mesh_check counts them). Vertices no
+ * triangle uses are kept too. O(V + T) expected. Release out with fl_mesh_free. Errors:
+ * FL_ERR_INPUT for an index >= vertex_count, FL_ERR_NOMEM; on failure *out is zeroed. */
+fl_status fl_mesh_weld(const fl_mesh *mesh, fl_mesh *out, fl_error *err);
+
+/* What fl_polygon_check found. Release with fl_polygon_report_free. */
+typedef struct fl_polygon_report {
+    size_t vertices, rings, polygons;
+    size_t holes;                 /* rings that are not the first ring of their polygon */
+    int simple;                   /* 1 iff every ring has >= 3 vertices, no two consecutive
+                                   * vertices of a ring are equal, and no two edges of any rings
+                                   * meet except consecutive edges of one ring at their common
+                                   * vertex (decided exactly) */
+    size_t edge_intersections;    /* pairs of edges that meet where they should not: edges of
+                                   * different rings or non-consecutive edges of one ring with
+                                   * a common point; consecutive edges overlapping beyond their
+                                   * common vertex. Rings with < 3 vertices take no part. */
+    int *ring_orientation;        /* per ring: +1 counter-clockwise, -1 clockwise, 0 when the
+                                   * ring is degenerate; exact turn at the lowest-leftmost vertex,
+                                   * which is the ring's orientation when the ring is simple */
+    double *ring_area;            /* per ring: signed shoelace area (positive when ccw) */
+    int orientation;              /* +1: every outer ring ccw and every hole cw (GeoJSON,
+                                   * RFC 7946); -1: the reverse (ESRI shapefile); 0: mixed */
+    double area;                  /* sum over polygons of |outer| - sum |holes| */
+    int holes_inside;             /* 1: every hole lies strictly inside its outer ring; 0: some
+                                   * hole does not; -1: not decided because not simple */
+} fl_polygon_report;
+
+/* Checks planar polygons: simplicity, ring orientation, areas, holes inside their outer ring.
+ * O(n log n) for n vertices when few edges are near each other, plus O(outer ring size) per
+ * hole for holes_inside. An all-zero polygon (no vertices, rings or polygons) is valid. On success *report must be
+ * released with fl_polygon_report_free. Errors: FL_ERR_INPUT for ring/polygon ranges that do
+ * not fit the arrays or non-finite coordinates; FL_ERR_NOMEM. On failure *report is zeroed. */
+fl_status fl_polygon_check(const fl_polygon *polygon, fl_polygon_report *report, fl_error *err);
+
+void fl_polygon_report_free(fl_polygon_report *report);
 
 /* end of mesh */
 
@@ -399,6 +513,114 @@ fl_status fl_rt3_verify(const double *xyzw, const fl_rt3 *rt, fl_error *err);
 void fl_rt3_free(fl_rt3 *rt);
 
 /* end of delaunay */
+
+
+/* ==== graphs ============================================================================== */
+/* (section owned by src/graphs) — the γ-neighbourhood graph and the classical graphs it unifies
+ * (thesis ch. 2.2 and 3). See docs/gamma.md for every parameter regime and the algorithms.
+ *
+ * The γ-neighbourhood N_γ(c0,c1) of k vertices in kD (an edge in 2D, a triangle in 3D) is built
+ * from two balls B0, B1 touching the vertices, of radii r/(1-|c0|) and r/(1-|c1|), where r is the
+ * radius of the smallest ball touching them (Def. 3.1). c0, c1 in [-1,1], |c0| <= |c1|;
+ * c0*c1 > 0: the centres lie on opposite sides of the vertices' hyperplane, c0*c1 < 0: on the same
+ * side; c1 >= 0: the neighbourhood is the union of the open balls, c1 < 0: their intersection.
+ * The open simplex is always part of it; |c| = 1 is an open half-space. */
+
+/* Which γ-graph to build. range == 0: γ(c[0], c[1]) joins the vertices of a simplex when one of
+ * its (at most two, mirror-symmetric) N_γ(c[0],c[1]) is empty (Def. 3.2); needs c in [-1,1] and
+ * |c[0]| <= |c[1]|. range != 0: γ([c[0],c[1]],[c[2],c[3]]) joins them when their largest empty
+ * N_γ(c0',c1') has c0' in [c[0],c[1]] and c1' in [c[2],c[3]] (Def. 3.3); needs
+ * -1 <= c[0] <= c[1] <= 1 and -1 <= c[2] <= c[3] <= 1.
+ * Reductions (§3.2): γ(-1,1) = convex hull, γ([-1,1],[0,1]) = Delaunay (all simplices with an
+ * empty ball; equal to the DT on non-degenerate input), γ(0,0) = Gabriel graph (2D),
+ * γ(b,b) = circle-based β-skeleton, γ(1,1) empty and γ(-1,-1) complete in general position. */
+typedef struct fl_gamma_params {
+    int range;
+    double c[4];
+} fl_gamma_params;
+
+/* How to build it. All zero is a safe default: the fastest exact method for the parameters. */
+typedef enum fl_gamma_method {
+    FL_GAMMA_AUTO = 0,       /* Delaunay-based when c1' >= 0 suffices (Thm. 3.2), output-sensitive
+                                search for non-Delaunay simplices (c1' < 0), brute force last */
+    FL_GAMMA_BRUTE_FORCE = 1 /* Theorem 3.1: every k-subset against every point, O(N^(k+1)) */
+} fl_gamma_method;
+
+typedef struct fl_graph_options {
+    fl_gamma_method method;
+    int want_params;         /* nonzero: also return (c0', c1') of every simplex */
+    fl_progress_fn progress; /* may be NULL */
+    void *progress_user;
+} fl_graph_options;
+
+/* A geometric (hyper-)graph on `vertex_count` input points of dimension `dim`: `simplex_count`
+ * simplices of `simplex_size` input indices each (2: edges, 3: triangles), each sorted
+ * increasingly, the list sorted lexicographically. `params` is NULL or holds (c0', c1') per
+ * simplex (γ-graphs with want_params). Free with fl_graph_free. */
+typedef struct fl_graph {
+    int dim;
+    size_t vertex_count;
+    int simplex_size;
+    size_t simplex_count;
+    uint32_t *simplices;
+    double *params;
+} fl_graph;
+
+void fl_graph_free(fl_graph *graph);
+
+/* Builds a γ-graph of n points (dim 2: edges, dim 3: triangles). coords holds n*dim finite
+ * doubles; the points must be pairwise distinct (duplicates are reported with their indices).
+ * opt may be NULL. Cost: O(N log N) for ranges with c2 >= 0 in non-degenerate sets (Thm. 3.2),
+ * output-sensitive for c1' < 0 in 2D, O(N^(k+1)) brute force otherwise (see docs/gamma.md).
+ * On failure *out is zeroed. FL_ERR_USAGE for bad parameters, FL_ERR_INPUT for bad points. */
+fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma_params *params,
+                         const fl_graph_options *opt, fl_graph *out, fl_error *err);
+
+/* The largest empty neighbourhood of one simplex (k = dim distinct indices) against all n
+ * points, in O(N): *c0, *c1 receive (c0', c1') (Def. 3.3) and the return value is 1; it is 0
+ * when no N_γ of the simplex is empty (another point lies in the closed simplex, or the vertices
+ * are collinear) and -1 on bad arguments. c1' >= 0 exactly when some ball touching the vertices
+ * is empty; this is the quantity constriction's γ-indicator derives from (Def. 5.1/5.2). */
+int fl_gamma_simplex_params(const double *coords, size_t n, int dim, const uint32_t *simplex,
+                            double *c0, double *c1);
+
+/* Parses "c0,c1" (range 0) or "c0,c1,c2,c3" (range 1) into *params and validates it. */
+fl_status fl_gamma_params_parse(const char *text, fl_gamma_params *params, fl_error *err);
+
+/* The classical graphs of thesis §2.2. */
+typedef enum fl_graph_kind {
+    FL_GRAPH_CONVEX_HULL, /* edges (2D) / triangles (3D), = γ(-1,1) */
+    FL_GRAPH_DELAUNAY,    /* edges / triangles with an empty ball, = γ([-1,1],[0,1]) */
+    FL_GRAPH_GABRIEL,     /* edges whose smallest ball is empty (kD, Def. 2.9) */
+    FL_GRAPH_RNG,         /* relative neighbourhood graph (Def. 2.8), edges */
+    FL_GRAPH_EMST,        /* Euclidean minimum spanning tree (Def. 2.5), edges; ties: lower index */
+    FL_GRAPH_NNG,         /* nearest-neighbour graph (Def. 2.4): i joined to its nearest point,
+                             ties to the lowest index */
+    FL_GRAPH_BETA_CIRCLE, /* β_c(b) skeleton (Def. 2.15), 2D only, b in [-1,1] */
+    FL_GRAPH_BETA_LUNE,   /* β_l(b) skeleton (Def. 2.16), 2D only, b in [-1,1] */
+    FL_GRAPH_ALPHA_SHAPE  /* α(a) shape (Def. 2.14): simplices touched by a generalized ball of
+                             radius 1/a that contains no point in its interior (a < 0), that
+                             contains every point (a > 0), or a half-space (a = 0, the hull) */
+} fl_graph_kind;
+
+/* Builds a classical graph; `param` is b for the β-skeletons, a for the α-shape, unused
+ * otherwise. Same input contract as fl_gamma_graph. */
+fl_status fl_classic_graph(const double *coords, size_t n, int dim, fl_graph_kind kind,
+                           double param, fl_graph *out, fl_error *err);
+
+/* Parses "ch", "dt", "gabriel", "rng", "emst", "nng", "beta-circle:B", "beta-lune:B",
+ * "alpha:A" (the CLI's --kind). */
+fl_status fl_graph_kind_parse(const char *text, fl_graph_kind *kind, double *param,
+                              fl_error *err);
+
+/* Writes the graph of the n points `coords` (dimension graph->dim) by the extension of path:
+ * .svg (2D only: points and edges, like the thesis's Figures 3.3-3.6), .obj (v lines, then l
+ * lines for edges or f lines for triangles), .ply (ascii: vertices, then edges or faces).
+ * Atomic: on failure the target is untouched. */
+fl_status fl_write_graph(const char *path, const double *coords, size_t n, const fl_graph *graph,
+                         fl_error *err);
+
+/* end of graphs */
 
 
 #ifdef __cplusplus

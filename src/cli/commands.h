@@ -3,5 +3,8 @@
 #define FL_CLI_COMMANDS_H
 
 int cmd_version(int argc, char **argv);
+int cmd_check(int argc, char **argv);
+int cmd_demo(int argc, char **argv);
+int cmd_delaunay(int argc, char **argv);
 
 #endif

@@ -107,7 +107,8 @@ int cli_progress_fn(void *user, const char *stage, double fraction)
     enum { WIDTH = 30 };
     int filled = (int)(fraction * WIDTH);
     char bar[WIDTH + 1];
-    for (int i = 0; i < WIDTH; i++) bar[i] = i < filled ? '#' : '.';
+    for (int i = 0; i < WIDTH; i++)
+        bar[i] = i < filled ? '#' : '.';
     bar[WIDTH] = '\0';
     fprintf(stderr, "\r%-24.24s [%s] %5.1f%%", stage ? stage : "", bar, fraction * 100.0);
     fflush(stderr);
@@ -148,12 +149,16 @@ void cli_json_begin(cli_json *j, FILE *fp)
 
 void cli_json_end(cli_json *j)
 {
-    while (j->depth > 1) cli_json_close(j);
+    while (j->depth > 1)
+        cli_json_close(j);
     fputs("}\n", j->fp);
     j->depth = 0;
 }
 
-void cli_json_key(cli_json *j, const char *key) { json_prefix(j, key); }
+void cli_json_key(cli_json *j, const char *key)
+{
+    json_prefix(j, key);
+}
 
 void cli_json_int(cli_json *j, const char *key, long long v)
 {

@@ -7,6 +7,10 @@
 #include "cli/commands.h"
 
 static const cli_command commands[] = {
+    {"demo", "run the main job on the bundled default inputs and write demo-out/", cmd_demo},
+    {"check", "report topology, validity and measures of a mesh or polygon file", cmd_check},
+    {"delaunay", "Delaunay triangulation of 2D/3D points, regular triangulation of balls",
+     cmd_delaunay},
     {"version", "print the version", cmd_version},
 };
 

@@ -48,6 +48,7 @@ int fl_vec_reserve(fl_vec *v, size_t count)
 
 int fl_vec_push(fl_vec *v, const void *src, size_t n)
 {
+    if (n == 0) return 0; /* memcpy from a NULL src of length 0 is still undefined */
     if (n > SIZE_MAX - v->count) return -1;
     if (fl_vec_reserve(v, v->count + n)) return -1;
     char *dst = (char *)v->data + v->count * v->elem;

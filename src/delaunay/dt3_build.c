@@ -159,26 +159,6 @@ static void orthogonal_ball(const double *const p[4], int weighted, double out[4
     out[3] = x2 - (weighted ? p[0][3] : 0.0);
 }
 
-static void fill_tet(const dt3_mesh *m, uint32_t s, const uint32_t *newid, int want_centers,
-                     dt3_output *out)
-{
-    size_t t = newid[s], cs = m->weighted ? 4 : 3;
-    const uint32_t *v = m->tv + 4 * (size_t)s;
-    for (int k = 0; k < 4; k++) {
-        uint32_t u = m->tn[4 * (size_t)s + k] >> 2;
-        out->tet[4 * t + k] = m->gid[v[k]];
-        out->adj[4 * t + k] = newid[u];
-    }
-    if (want_centers) {
-        const double *p[4];
-        double c[4];
-        for (int k = 0; k < 4; k++)
-            p[k] = m->pts + (size_t)v[k] * m->stride;
-        orthogonal_ball(p, m->weighted, c);
-        memcpy(out->centers + cs * t, c, cs * sizeof(double));
-    }
-}
-
 /* The hull face of infinite tetrahedron s, read from its finite neighbour so that it is
  * counterclockwise seen from outside. */
 static void fill_hull_face(const dt3_mesh *m, uint32_t s, uint32_t *face)
@@ -193,37 +173,69 @@ static void fill_hull_face(const dt3_mesh *m, uint32_t s, uint32_t *face)
         face[i] = m->gid[m->tv[4 * (size_t)f + c[i]]];
 }
 
-static fl_status extract(const dt3_mesh *m, int want_centers, dt3_output *out, fl_error *err)
+/* Hull faces and centres: everything that needs the store in local numbering. */
+static fl_status extract_extras(const dt3_mesh *m, const uint32_t *newid, int want_centers,
+                                dt3_output *out, fl_error *err)
+{
+    size_t cs = m->weighted ? 4 : 3;
+    out->hull_faces = fl_alloc_array(out->hull_face_count, 3 * sizeof(uint32_t));
+    out->centers = want_centers ? fl_alloc_array(out->tet_count, cs * sizeof(double)) : NULL;
+    if (!out->hull_faces || (want_centers && !out->centers))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu tetrahedra",
+                       out->tet_count);
+    for (size_t s = 0, h = 0; s < m->slots; s++) {
+        const uint32_t *v = m->tv + 4 * s;
+        if (newid[s] == DT3_NONE && v[0] != DT3_DEAD)
+            fill_hull_face(m, (uint32_t)s, out->hull_faces + 3 * h++);
+        if (newid[s] == DT3_NONE || !want_centers) continue;
+        const double *p[4];
+        double c[4];
+        for (int k = 0; k < 4; k++)
+            p[k] = m->pts + (size_t)v[k] * m->stride;
+        orthogonal_ball(p, m->weighted, c);
+        memcpy(out->centers + cs * newid[s], c, cs * sizeof(double));
+    }
+    return FL_OK;
+}
+
+/* Turns the store into the output in place: finite tetrahedra are moved down to their new
+ * index (never above their slot, so nothing unread is overwritten), corners become caller
+ * indices and links become tetrahedron indices. The store then belongs to out. */
+static void compact_store(dt3_mesh *m, const uint32_t *newid, dt3_output *out)
+{
+    for (size_t s = 0; s < m->slots; s++) {
+        size_t d = newid[s];
+        if (d == DT3_NONE) continue;
+        for (int k = 0; k < 4; k++) {
+            m->tv[4 * d + k] = m->gid[m->tv[4 * s + k]];
+            m->tn[4 * d + k] = newid[m->tn[4 * s + k] >> 2];
+        }
+    }
+    size_t nt = out->tet_count ? out->tet_count : 1;
+    uint32_t *tv = fl_realloc_array(m->tv, nt, 4 * sizeof *tv);
+    uint32_t *tn = fl_realloc_array(m->tn, nt, 4 * sizeof *tn);
+    out->tet = tv ? tv : m->tv; /* a failed shrink keeps the larger block */
+    out->adj = tn ? tn : m->tn;
+    m->tv = m->tn = NULL;
+}
+
+static fl_status extract(dt3_mesh *m, int want_centers, dt3_output *out, fl_error *err)
 {
     uint32_t *newid = fl_alloc_array(m->slots, sizeof *newid);
     if (!newid) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-    size_t nt = 0, nh = 0, cs = m->weighted ? 4 : 3;
+    out->tet_count = out->hull_face_count = 0;
     for (size_t s = 0; s < m->slots; s++) {
         newid[s] = DT3_NONE;
         if (m->tv[4 * s] == DT3_DEAD) continue;
         if (dt3_is_infinite(m, (uint32_t)s))
-            nh++;
+            out->hull_face_count++;
         else
-            newid[s] = (uint32_t)nt++;
+            newid[s] = (uint32_t)out->tet_count++;
     }
-    out->tet = fl_alloc_array(nt, 4 * sizeof(uint32_t));
-    out->adj = fl_alloc_array(nt, 4 * sizeof(uint32_t));
-    out->hull_faces = fl_alloc_array(nh, 3 * sizeof(uint32_t));
-    out->centers = want_centers ? fl_alloc_array(nt, cs * sizeof(double)) : NULL;
-    if (!out->tet || !out->adj || !out->hull_faces || (want_centers && !out->centers)) {
-        free(newid);
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu tetrahedra", nt);
-    }
-    out->tet_count = nt;
-    out->hull_face_count = nh;
-    for (size_t s = 0, h = 0; s < m->slots; s++) {
-        if (newid[s] != DT3_NONE)
-            fill_tet(m, (uint32_t)s, newid, want_centers, out);
-        else if (m->tv[4 * s] != DT3_DEAD)
-            fill_hull_face(m, (uint32_t)s, out->hull_faces + 3 * h++);
-    }
+    fl_status st = extract_extras(m, newid, want_centers, out, err);
+    if (st == FL_OK) compact_store(m, newid, out);
     free(newid);
-    return FL_OK;
+    return st;
 }
 
 static int cmp_u32(const void *a, const void *b)

@@ -19,7 +19,7 @@
 #define DT3_DEAD (UINT32_MAX - 1) /* tv[4t] of a tetrahedron on the free list */
 #define DT3_NONE UINT32_MAX       /* no tetrahedron */
 /* Neighbour links pack a tetrahedron index and a corner into 32 bits. */
-#define DT3_MAX_TETS ((size_t)1 << 30)
+#define DT3_MAX_TETS (((size_t)1 << 30) - 1) /* so that no link equals DT3_NONE */
 
 /* Corners of the face opposite corner k, ordered so that the face is counterclockwise seen from
  * outside the tetrahedron (an even permutation of the tetrahedron with k last). */
@@ -40,11 +40,7 @@ typedef struct dt3_mesh {
     fl_vec touched;      /* uint32 tetrahedra tested and found not in conflict */
     fl_vec boundary;     /* uint32 (t << 2 | k): cavity faces seen from inside */
     fl_vec created;      /* uint32 tetrahedra created by the current insertion */
-    uint64_t *hkey;      /* edge hash for linking new tetrahedra */
-    uint32_t *hval, *hgen;
-    size_t hcap;
-    uint32_t gen;
-    uint32_t *vstamp; /* weighted only: per point, to find vertices the cavity swallowed */
+    uint32_t *vstamp;    /* weighted only: per point, to find vertices the cavity swallowed */
 } dt3_mesh;
 
 /* Result of inserting one point. */

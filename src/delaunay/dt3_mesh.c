@@ -60,77 +60,21 @@ static void link(dt3_mesh *m, uint32_t t, int k, uint32_t u, int j)
     m->tn[4 * (size_t)u + j] = (t << 2) | (uint32_t)k;
 }
 
-/* ---- edge hash: pairs up the faces of new tetrahedra that share the new apex ---- */
-
-static int hash_reserve(dt3_mesh *m, size_t entries)
+/* Links the tetrahedra t[0..count) to each other wherever they share a face (by comparing
+ * vertex sets): only for the five tetrahedra of the initial triangulation. */
+static void link_by_search(dt3_mesh *m, const uint32_t *t, int count)
 {
-    if (entries * 2 <= m->hcap) return 0;
-    size_t cap = m->hcap ? m->hcap : 256;
-    while (cap < entries * 2)
-        cap *= 2;
-    free(m->hkey);
-    free(m->hval);
-    free(m->hgen);
-    m->hkey = fl_alloc_array(cap, sizeof *m->hkey);
-    m->hval = fl_alloc_array(cap, sizeof *m->hval);
-    m->hgen = fl_calloc_array(cap, sizeof *m->hgen);
-    m->hcap = m->hkey && m->hval && m->hgen ? cap : 0;
-    m->gen = 0;
-    return m->hcap ? 0 : -1;
-}
-
-/* Face k of new tetrahedron t contains the apex at corner `apex`; the other two corners of the
- * face are an edge of the cavity boundary, shared by exactly two new faces. The first visit
- * stores the face, the second links the pair. */
-static void hash_face(dt3_mesh *m, uint32_t t, int k, int apex)
-{
-    const uint32_t *v = m->tv + 4 * (size_t)t;
-    uint32_t a = DT3_NONE, b = DT3_NONE;
-    for (int i = 0; i < 4; i++) {
-        if (i == k || i == apex) continue;
-        if (a == DT3_NONE)
-            a = v[i];
-        else
-            b = v[i];
-    }
-    uint64_t key = a < b ? ((uint64_t)a << 32 | b) : ((uint64_t)b << 32 | a);
-    size_t mask = m->hcap - 1;
-    size_t h = (size_t)((key * 0x9E3779B97F4A7C15ULL) >> 20) & mask;
-    while (m->hgen[h] == m->gen) {
-        if (m->hkey[h] == key) {
-            uint32_t u = m->hval[h];
-            link(m, t, k, u >> 2, (int)(u & 3));
-            return;
-        }
-        h = (h + 1) & mask;
-    }
-    m->hgen[h] = m->gen;
-    m->hkey[h] = key;
-    m->hval[h] = (t << 2) | (uint32_t)k;
-}
-
-/* Starts a new generation of the hash; a wrapped counter clears the table. */
-static void hash_begin(dt3_mesh *m)
-{
-    if (++m->gen == 0) {
-        memset(m->hgen, 0, m->hcap * sizeof *m->hgen);
-        m->gen = 1;
-    }
-}
-
-/* Links the faces through the apex of every tetrahedron in m->created. */
-static void link_created(dt3_mesh *m, uint32_t apex_vertex)
-{
-    const uint32_t *c = m->created.data;
-    hash_begin(m);
-    for (size_t i = 0; i < m->created.count; i++) {
-        const uint32_t *v = m->tv + 4 * (size_t)c[i];
-        int apex = 0;
-        while (v[apex] != apex_vertex)
-            apex++;
-        for (int k = 0; k < 4; k++)
-            if (k != apex) hash_face(m, c[i], k, apex);
-    }
+    for (int i = 0; i < count; i++)
+        for (int j = i + 1; j < count; j++)
+            for (int k = 0; k < 4; k++)
+                for (int l = 0; l < 4; l++) {
+                    const uint32_t *a = m->tv + 4 * (size_t)t[i], *b = m->tv + 4 * (size_t)t[j];
+                    int shared = 0;
+                    for (int x = 0; x < 4; x++)
+                        for (int y = 0; y < 4; y++)
+                            shared += x != k && y != l && a[x] == b[y];
+                    if (shared == 3) link(m, t[i], k, t[j], l);
+                }
 }
 
 int dt3_mesh_init(dt3_mesh *m, const uint32_t v[4], size_t expected_points)
@@ -142,15 +86,15 @@ int dt3_mesh_init(dt3_mesh *m, const uint32_t v[4], size_t expected_points)
     fl_vec_init(&m->touched, sizeof(uint32_t));
     fl_vec_init(&m->boundary, sizeof(uint32_t));
     fl_vec_init(&m->created, sizeof(uint32_t));
-    if (grow_store(m, slots) != 0 || hash_reserve(m, 64) != 0) return -1;
+    if (grow_store(m, slots) != 0) return -1;
     uint32_t q[4] = {v[0], v[1], v[2], v[3]};
     if (fl_orient3d(pt(m, q[0]), pt(m, q[1]), pt(m, q[2]), pt(m, q[3])) < 0) {
         q[0] = v[1];
         q[1] = v[0];
     }
-    uint32_t t0 = new_tet(m);
+    uint32_t t[5];
+    t[0] = new_tet(m);
     memcpy(m->tv, q, sizeof q);
-    m->created.count = 0;
     for (int k = 0; k < 4; k++) {
         /* Replace corner k by the infinite vertex and swap two other corners: the infinite
          * vertex then lies on the far side of face k, as the orientation convention asks. */
@@ -160,11 +104,10 @@ int dt3_mesh_init(dt3_mesh *m, const uint32_t v[4], size_t expected_points)
         uint32_t tmp = w[(k + 1) & 3];
         w[(k + 1) & 3] = w[(k + 2) & 3];
         w[(k + 2) & 3] = tmp;
-        link(m, t0, k, u, k);
-        fl_vec_push(&m->created, &u, 1);
+        t[k + 1] = u;
     }
-    link_created(m, DT3_INF);
-    m->last = t0;
+    link_by_search(m, t, 5);
+    m->last = t[0];
     return 0;
 }
 
@@ -173,9 +116,6 @@ void dt3_mesh_free(dt3_mesh *m)
     free(m->tv);
     free(m->tn);
     free(m->mark);
-    free(m->hkey);
-    free(m->hval);
-    free(m->hgen);
     free(m->vstamp);
     fl_vec_free(&m->cavity);
     fl_vec_free(&m->touched);
@@ -230,8 +170,14 @@ uint32_t dt3_locate(dt3_mesh *m, const double *q)
 static int finite_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
 {
     const uint32_t *v = m->tv + 4 * (size_t)t;
-    return dt3_power_sos(m->weighted, pt(m, v[0]), pt(m, v[1]), pt(m, v[2]), pt(m, v[3]), pt(m, p),
-                         m->gid[v[0]], m->gid[v[1]], m->gid[v[2]], m->gid[v[3]], m->gid[p]) > 0;
+    const double *a = pt(m, v[0]), *b = pt(m, v[1]), *c = pt(m, v[2]), *d = pt(m, v[3]);
+    /* The unperturbed test first: it decides almost always, without loading the indices. */
+    int s = m->weighted ? fl_insphere_weighted(a, b, c, d, pt(m, p))
+                        : fl_insphere(a, b, c, d, pt(m, p));
+    if (s == 0)
+        s = dt3_power_sos(m->weighted, a, b, c, d, pt(m, p), m->gid[v[0]], m->gid[v[1]],
+                          m->gid[v[2]], m->gid[v[3]], m->gid[p]);
+    return s > 0;
 }
 
 int dt3_in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
@@ -253,25 +199,70 @@ int dt3_in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
 /* Breadth-first search of the tetrahedra in conflict with p from t (which is). The conflict
  * region is connected: it is the set of lower-hull facets visible from the lifted p. Marks:
  * 1 in the cavity, 2 tested and not in conflict. */
+/* fl_vec_push of one uint32 without the call in the common case. */
+static inline int push_u32(fl_vec *v, uint32_t x)
+{
+    if (v->count == v->capacity && fl_vec_reserve(v, v->count + 1) != 0) return -1;
+    ((uint32_t *)v->data)[v->count++] = x;
+    return 0;
+}
+
 static int find_cavity(dt3_mesh *m, uint32_t t, uint32_t p)
 {
     m->cavity.count = m->touched.count = m->boundary.count = 0;
-    if (fl_vec_push(&m->cavity, &t, 1) != 0) return -1;
+    if (push_u32(&m->cavity, t) != 0) return -1;
     m->mark[t] = 1;
     for (size_t i = 0; i < m->cavity.count; i++) {
         uint32_t c = ((const uint32_t *)m->cavity.data)[i];
         for (int k = 0; k < 4; k++) {
-            uint32_t u = m->tn[4 * (size_t)c + k] >> 2, face = (c << 2) | (uint32_t)k;
-            if (m->mark[u] == 1) continue;
-            int in = m->mark[u] == 0 && dt3_in_conflict(m, u, p);
+            uint32_t u = m->tn[4 * (size_t)c + k] >> 2;
             if (m->mark[u] == 0) {
+                int in = dt3_in_conflict(m, u, p);
                 m->mark[u] = in ? 1 : 2;
-                if (fl_vec_push(in ? &m->cavity : &m->touched, &u, 1) != 0) return -1;
+                if (push_u32(in ? &m->cavity : &m->touched, u) != 0) return -1;
             }
-            if (!in && fl_vec_push(&m->boundary, &face, 1) != 0) return -1;
+            if (m->mark[u] == 2 && push_u32(&m->boundary, (c << 2) | (uint32_t)k) != 0) return -1;
         }
     }
     return 0;
+}
+
+/* Corner of tetrahedron v other than corner `skip` and the corners holding a and b. */
+static int third_corner(const uint32_t *v, int skip, uint32_t a, uint32_t b)
+{
+    int i = 0;
+    while (i == skip || v[i] == a || v[i] == b)
+        i++;
+    return i;
+}
+
+/* The new tetrahedron's face through p and the cavity edge ab, found by turning around ab
+ * through the cavity from boundary face (c, k) to the other boundary face on ab (the cavity is
+ * a ball, so the turn ends there). fill_cavity has left in every boundary face's slot the link
+ * to the new tetrahedron on it, which is how the end of the turn is recognised (mark 0).
+ * Corner j of c is the corner of the boundary face off ab. Returns (tetrahedron << 2 | corner). */
+static uint32_t across_edge(const dt3_mesh *m, uint32_t c, int k, int j)
+{
+    const uint32_t *cv = m->tv + 4 * (size_t)c;
+    int ia = 0;
+    while (ia == j || ia == k)
+        ia++;
+    uint32_t a = cv[ia], b = cv[6 - j - k - ia];
+    uint32_t cur = c;
+    int exit = j; /* leave cur through its face opposite `exit`, the other face on ab */
+    for (;;) {
+        uint32_t link = m->tn[4 * (size_t)cur + exit], n = link >> 2;
+        const uint32_t *v = m->tv + 4 * (size_t)cur;
+        int w = third_corner(v, exit, a, b);
+        if (m->mark[n] != 1) /* n is the new tetrahedron on (cur, exit), laid out like cur */
+            return (n << 2) | (uint32_t)w;
+        const uint32_t *nv = m->tv + 4 * (size_t)n;
+        int e = 0;
+        while (nv[e] != v[w])
+            e++;
+        cur = n;
+        exit = e;
+    }
 }
 
 /* Cones every boundary face to p. The new tetrahedron keeps the corners of the cavity
@@ -280,21 +271,30 @@ static int find_cavity(dt3_mesh *m, uint32_t t, uint32_t p)
 static int fill_cavity(dt3_mesh *m, uint32_t p)
 {
     size_t nb = m->boundary.count;
-    if (grow_store(m, m->slots + nb) != 0 || hash_reserve(m, 2 * nb) != 0 ||
-        fl_vec_reserve(&m->created, nb) != 0)
-        return -1;
-    m->created.count = 0;
-    const uint32_t *bf = m->boundary.data;
+    if (grow_store(m, m->slots + nb) != 0 || fl_vec_reserve(&m->created, nb) != 0) return -1;
+    uint32_t *bf = m->boundary.data, *created = m->created.data;
+    m->created.count = nb;
     for (size_t i = 0; i < nb; i++) {
         uint32_t c = bf[i] >> 2, u = new_tet(m);
         int k = (int)(bf[i] & 3);
         uint32_t outer = m->tn[4 * (size_t)c + k];
         memcpy(m->tv + 4 * (size_t)u, m->tv + 4 * (size_t)c, 4 * sizeof(uint32_t));
         m->tv[4 * (size_t)u + k] = p;
+        for (int j = 0; j < 4; j++)
+            m->tn[4 * (size_t)u + j] = DT3_NONE;
         link(m, u, k, outer >> 2, (int)(outer & 3));
-        ((uint32_t *)m->created.data)[m->created.count++] = u;
+        m->tn[4 * (size_t)c + k] = (u << 2) | (uint32_t)k; /* the cavity is discarded */
+        created[i] = u;
     }
-    link_created(m, p);
+    for (size_t i = 0; i < nb; i++) {
+        uint32_t c = bf[i] >> 2, u = created[i];
+        int k = (int)(bf[i] & 3);
+        for (int j = 0; j < 4; j++)
+            if (j != k && m->tn[4 * (size_t)u + j] == DT3_NONE) {
+                uint32_t other = across_edge(m, c, k, j);
+                link(m, u, j, other >> 2, (int)(other & 3));
+            }
+    }
     return 0;
 }
 
@@ -314,7 +314,7 @@ static int collect_hidden(dt3_mesh *m, uint32_t p, fl_vec *hidden)
         for (int j = 0; j < 4; j++) {
             if (v[j] == DT3_INF || m->vstamp[v[j]] == stamp) continue;
             m->vstamp[v[j]] = stamp;
-            if (fl_vec_push(hidden, &v[j], 1) != 0) return -1;
+            if (push_u32(hidden, v[j]) != 0) return -1;
         }
     }
     return 0;

@@ -238,7 +238,7 @@ static fl_status parse_number(parser *ps, size_t *index)
             return fail_at(ps, ps->line, "invalid number: the exponent has no digits");
         p = d;
     }
-    double v;
+    double v = 0;
     fl_number_scan scan = fl_scan_double(s, (size_t)(p - s), &v);
     /* 1e999 is valid JSON; it becomes an infinity that the user of the value may refuse
      * (a coordinate) or ignore (a property). */

@@ -1,10 +1,12 @@
 /* Shared pieces of the mesh readers: bounded text scanning, number parsing, mesh building. */
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "io/mesh_read.h"
+#include "io/text_scan.h"
 
 static int is_space(char c)
 {
@@ -109,15 +111,18 @@ int fl_token_is_nocase(const char *tok, size_t len, const char *word)
 
 int fl_parse_double(const char *tok, size_t len, double *v)
 {
-    /* strtod needs a NUL-terminated string and the buffer may not have one, so the token is
-     * copied. 400 characters hold any decimal a writer emits for a double ("%.17g" needs 24). */
-    char buf[400];
-    if (len == 0 || len >= sizeof buf) return -1;
-    memcpy(buf, tok, len);
-    buf[len] = '\0';
-    char *end;
-    *v = strtod(buf, &end);
-    return end == buf + len ? 0 : -1;
+    /* One number parser for every text format (Clinger's fast path, then strtod). A NaN, an
+     * infinity or an overflow like 1e999 parses as NaN, which the readers reject with their
+     * location. */
+    switch (fl_scan_double(tok, len, v)) {
+    case FL_NUMBER_OK:
+        return 0;
+    case FL_NUMBER_NONFINITE:
+        *v = NAN;
+        return 0;
+    default:
+        return -1;
+    }
 }
 
 int fl_parse_integer(const char *tok, size_t len, long long *v)

@@ -64,6 +64,7 @@ static fl_status points_from_mesh(const char *format, const char *name, const ch
 fl_status fl_parse_points(const char *format, const char *name, const void *data, size_t size,
                           fl_points *out, fl_error *err)
 {
+    if (!out) return fl_fail(err, FL_ERR_USAGE, name, -1, "fl_parse_points: out is NULL");
     memset(out, 0, sizeof *out);
     char fmt[16];
     normalize_format(format, fmt, sizeof fmt);
@@ -78,6 +79,8 @@ fl_status fl_parse_points(const char *format, const char *name, const void *data
 
 fl_status fl_read_points(const char *path, fl_points *out, fl_error *err)
 {
+    if (!out || !path)
+        return fl_fail(err, FL_ERR_USAGE, path, -1, "fl_read_points: path or out is NULL");
     memset(out, 0, sizeof *out);
     char ext[16];
     fl_path_extension(path, ext, sizeof ext);
@@ -95,6 +98,7 @@ fl_status fl_read_points(const char *path, fl_points *out, fl_error *err)
 fl_status fl_parse_polygon(const char *format, const char *name, const void *data, size_t size,
                            fl_polygon *out, fl_error *err)
 {
+    if (!out) return fl_fail(err, FL_ERR_USAGE, name, -1, "fl_parse_polygon: out is NULL");
     memset(out, 0, sizeof *out);
     char fmt[16];
     normalize_format(format, fmt, sizeof fmt);
@@ -109,6 +113,8 @@ fl_status fl_parse_polygon(const char *format, const char *name, const void *dat
 
 fl_status fl_read_polygon(const char *path, fl_polygon *out, fl_error *err)
 {
+    if (!out || !path)
+        return fl_fail(err, FL_ERR_USAGE, path, -1, "fl_read_polygon: path or out is NULL");
     memset(out, 0, sizeof *out);
     char ext[16];
     fl_path_extension(path, ext, sizeof ext);
@@ -169,6 +175,8 @@ static fl_status write_points_ply(FILE *fp, const fl_points *points)
 
 fl_status fl_write_points(const char *path, const fl_points *points, fl_error *err)
 {
+    if (!path || !points)
+        return fl_fail(err, FL_ERR_USAGE, path, -1, "fl_write_points: path or points is NULL");
     char ext[16];
     fl_path_extension(path, ext, sizeof ext);
     int ply = strcmp(ext, "ply") == 0;
@@ -225,6 +233,8 @@ static fl_status check_polygon(const char *path, const fl_polygon *g, fl_error *
 
 fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error *err)
 {
+    if (!path || !polygon)
+        return fl_fail(err, FL_ERR_USAGE, path, -1, "fl_write_polygon: path or polygon is NULL");
     char ext[16];
     fl_path_extension(path, ext, sizeof ext);
     fl_status (*writer)(FILE *, const fl_polygon *) = NULL;

@@ -1,21 +1,46 @@
 /* Sign-magnitude integers on caller-provided limbs: just enough arithmetic (add, subtract,
  * multiply) to evaluate the predicate determinants exactly. Schoolbook multiplication is right
  * here: the exact stage runs rarely and its operands are usually one to three limbs long. */
-#include <math.h>
+#include <string.h>
 
 #include "predicates/predicates_internal.h"
+
+/* Number of trailing zero bits of m != 0. */
+static int trailing_zeros(uint64_t m)
+{
+#if defined(__GNUC__)
+    return __builtin_ctzll(m);
+#else
+    int n = 0;
+    while (!(m & 1))
+        m >>= 1, n++;
+    return n;
+#endif
+}
+
+/* |x| = m * 2^e with m odd, for finite x != 0, read from the IEEE-754 fields (exact, and
+ * much cheaper than frexp): a subnormal has biased exponent 0 and no hidden bit. */
+static uint64_t decode(double x, int *e)
+{
+    uint64_t bits;
+    memcpy(&bits, &x, sizeof bits);
+    int biased = (int)(bits >> 52 & 0x7ff);
+    uint64_t m = bits & ((UINT64_C(1) << 52) - 1);
+    if (biased == 0) {
+        *e = -1074;
+    } else {
+        m |= UINT64_C(1) << 52;
+        *e = biased - 1075;
+    }
+    int tz = trailing_zeros(m);
+    *e += tz;
+    return m >> tz;
+}
 
 int fl_big_low_exponent(double x)
 {
     int e;
-    /* frexp is exact and handles subnormals: |x| = f * 2^e with f in [0.5, 1), so
-     * m = f * 2^53 is an integer below 2^53 (an exact scaling) and |x| = m * 2^(e - 53). */
-    uint64_t m = (uint64_t)ldexp(frexp(fabs(x), &e), 53);
-    e -= 53;
-    while ((m & 1) == 0) {
-        m >>= 1;
-        e++;
-    }
+    decode(x, &e);
     return e;
 }
 
@@ -25,21 +50,16 @@ void fl_big_set_double(fl_big *r, double x, int emin)
     r->neg = 0;
     if (x == 0) return;
     int e;
-    uint64_t m = (uint64_t)ldexp(frexp(fabs(x), &e), 53);
-    int shift = e - 53 - emin; /* may be negative when m has trailing zero bits */
-    while (shift < 0) {
-        m >>= 1; /* drops only zero bits: the caller guarantees the lowest set bit >= emin */
-        shift++;
-    }
+    uint64_t m = decode(x, &e);
+    int shift = e - emin; /* >= 0: the caller guarantees the lowest set bit >= emin */
     int word = shift / 32, bit = shift % 32;
     for (int i = 0; i < word; i++)
         r->limb[i] = 0;
     /* m < 2^53 shifted by < 32 bits fits in 85 bits: three limbs. */
-    uint64_t lo = (m << bit) & 0xffffffffu;
-    uint64_t mid = bit ? (m >> (32 - bit)) : (m >> 32);
-    r->limb[word] = (uint32_t)lo;
-    r->limb[word + 1] = (uint32_t)(mid & 0xffffffffu);
-    r->limb[word + 2] = (uint32_t)(mid >> 32);
+    uint64_t low = m << bit, high = bit ? m >> (64 - bit) : 0;
+    r->limb[word] = (uint32_t)low;
+    r->limb[word + 1] = (uint32_t)(low >> 32);
+    r->limb[word + 2] = (uint32_t)high;
     r->len = word + 3;
     while (r->len > 0 && r->limb[r->len - 1] == 0)
         r->len--;

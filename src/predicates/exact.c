@@ -64,6 +64,15 @@ static int common_low_exponent(const double *const *pts, int n, int dim, int wei
     return emin == INT_MAX ? 0 : emin;
 }
 
+int fl_lattice_zero(const double *const *pts, int n, int dim, int weighted, int degree,
+                    double bound)
+{
+    int emin = common_low_exponent(pts, n, dim, weighted);
+    /* det is an integer multiple of 2^(degree * emin); below -1074 the power is not a double */
+    long e = (long)degree * emin;
+    return e > -1074 && 2 * bound <= ldexp(1, (int)e);
+}
+
 typedef struct exact_matrix {
     int n; /* rows = columns */
     fl_big ent[4][4];

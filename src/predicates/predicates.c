@@ -55,12 +55,15 @@ int fl_orient2d(const double *a, const double *b, const double *c)
     double acy = a[1] - c[1], bcy = b[1] - c[1];
     double det = acx * bcy - acy * bcx;
     double mx = max2(fabs(acx), fabs(bcx)), my = max2(fabs(acy), fabs(bcy));
+    const double *p[3] = {a, b, c};
     if (in_range(mx, O2_LO, O2_HI) && in_range(my, O2_LO, O2_HI)) {
         double eps = O2_C * mx * my;
         if (det > eps) return 1;
         if (det < -eps) return -1;
+        if (fl_lattice_zero(p, 3, 2, 0, 2, eps)) return 0;
+    } else if (mx == 0 || my == 0) {
+        return 0; /* a zero column: fl(p - q) == 0 only when p == q */
     }
-    const double *p[3] = {a, b, c};
     return fl_exact_det_sign(p, 3, 2, 0, 0);
 }
 
@@ -82,12 +85,15 @@ int fl_orient3d(const double *a, const double *b, const double *c, const double 
     double mx = max3(fabs(adx), fabs(bdx), fabs(cdx));
     double my = max3(fabs(ady), fabs(bdy), fabs(cdy));
     double mz = max3(fabs(adz), fabs(bdz), fabs(cdz));
+    const double *p[4] = {a, b, c, d};
     if (in_range(mx, O3_LO, O3_HI) && in_range(my, O3_LO, O3_HI) && in_range(mz, O3_LO, O3_HI)) {
         double eps = O3_C * mx * my * mz;
         if (det > eps) return 1;
         if (det < -eps) return -1;
+        if (fl_lattice_zero(p, 4, 3, 0, 3, eps)) return 0;
+    } else if (mx == 0 || my == 0 || mz == 0) {
+        return 0;
     }
-    const double *p[4] = {a, b, c, d};
     return fl_exact_det_sign(p, 4, 3, 0, 0);
 }
 
@@ -104,7 +110,7 @@ int fl_orient3d(const double *a, const double *b, const double *c, const double 
 #define IC_HI 0x1p+240
 
 static int incircle_filter(const double *a, const double *b, const double *c, const double *d,
-                           double adw, double bdw, double cdw)
+                           double adw, double bdw, double cdw, int weighted)
 {
     double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
     double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
@@ -116,29 +122,27 @@ static int incircle_filter(const double *a, const double *b, const double *c, co
     double mx = max3(fabs(adx), fabs(bdx), fabs(cdx));
     double my = max3(fabs(ady), fabs(bdy), fabs(cdy));
     double mw = max3(fabs(adw), fabs(bdw), fabs(cdw));
+    const double *p[4] = {a, b, c, d};
     if (in_range(mx, IC_LO, IC_HI) && in_range(my, IC_LO, IC_HI) && mw <= IC_HI * IC_HI) {
         double mm = max2(mx, my);
         double eps = IC_C * (mm * mm + mw) * mx * my;
         if (det > eps) return 1;
         if (det < -eps) return -1;
+        if (fl_lattice_zero(p, 4, 2, weighted, 4, eps)) return 0;
+    } else if (mx == 0 || my == 0) {
+        return 0;
     }
-    return 0;
+    return fl_exact_det_sign(p, 4, 2, 1, weighted);
 }
 
 int fl_incircle(const double *a, const double *b, const double *c, const double *d)
 {
-    int s = incircle_filter(a, b, c, d, 0, 0, 0);
-    if (s) return s;
-    const double *p[4] = {a, b, c, d};
-    return fl_exact_det_sign(p, 4, 2, 1, 0);
+    return incircle_filter(a, b, c, d, 0, 0, 0, 0);
 }
 
 int fl_incircle_weighted(const double *a, const double *b, const double *c, const double *d)
 {
-    int s = incircle_filter(a, b, c, d, a[2] - d[2], b[2] - d[2], c[2] - d[2]);
-    if (s) return s;
-    const double *p[4] = {a, b, c, d};
-    return fl_exact_det_sign(p, 4, 2, 1, 1);
+    return incircle_filter(a, b, c, d, a[2] - d[2], b[2] - d[2], c[2] - d[2], 1);
 }
 
 /* Degree 5 with the lift l = dx^2 + dy^2 + dz^2 - dw. Lambda = mm^2 + mw as in 2D,
@@ -153,7 +157,7 @@ int fl_incircle_weighted(const double *a, const double *b, const double *c, cons
 #define IS_HI 0x1p+190
 
 static int insphere_filter(const double *a, const double *b, const double *c, const double *d,
-                           const double *e, const double *dw)
+                           const double *e, const double *dw, int weighted)
 {
     double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
     double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
@@ -174,31 +178,29 @@ static int insphere_filter(const double *a, const double *b, const double *c, co
     double my = max4(fabs(aey), fabs(bey), fabs(cey), fabs(dey));
     double mz = max4(fabs(aez), fabs(bez), fabs(cez), fabs(dez));
     double mw = max4(fabs(dw[0]), fabs(dw[1]), fabs(dw[2]), fabs(dw[3]));
+    const double *p[5] = {a, b, c, d, e};
     if (in_range(mx, IS_LO, IS_HI) && in_range(my, IS_LO, IS_HI) && in_range(mz, IS_LO, IS_HI) &&
         mw <= IS_HI * IS_HI) {
         double mm = max3(mx, my, mz);
         double eps = IS_C * (mm * mm + mw) * mx * my * mz;
         if (det > eps) return 1;
         if (det < -eps) return -1;
+        if (fl_lattice_zero(p, 5, 3, weighted, 5, eps)) return 0;
+    } else if (mx == 0 || my == 0 || mz == 0) {
+        return 0;
     }
-    return 0;
+    return fl_exact_det_sign(p, 5, 3, 1, weighted);
 }
 
 int fl_insphere(const double *a, const double *b, const double *c, const double *d, const double *e)
 {
     static const double zero[4] = {0, 0, 0, 0};
-    int s = insphere_filter(a, b, c, d, e, zero);
-    if (s) return s;
-    const double *p[5] = {a, b, c, d, e};
-    return fl_exact_det_sign(p, 5, 3, 1, 0);
+    return insphere_filter(a, b, c, d, e, zero, 0);
 }
 
 int fl_insphere_weighted(const double *a, const double *b, const double *c, const double *d,
                          const double *e)
 {
     double dw[4] = {a[3] - e[3], b[3] - e[3], c[3] - e[3], d[3] - e[3]};
-    int s = insphere_filter(a, b, c, d, e, dw);
-    if (s) return s;
-    const double *p[5] = {a, b, c, d, e};
-    return fl_exact_det_sign(p, 5, 3, 1, 1);
+    return insphere_filter(a, b, c, d, e, dw, 1);
 }

@@ -42,4 +42,12 @@ static inline int fl_big_sign(const fl_big *a)
  *    (incircle / insphere and their weighted versions; weights are 0 when !weighted). */
 int fl_exact_det_sign(const double *const *pts, int n, int dim, int lifted, int weighted);
 
+/* The lattice argument that settles most exactly degenerate inputs without the exact stage:
+ * if every coordinate is a multiple of 2^L (every weight of 2^(2L)), the determinant, a
+ * polynomial of the given degree in the coordinates, is a multiple of 2^(degree L). A caller
+ * that knows |det| < 2 * bound (computed |det| <= bound and rounding error < bound) learns
+ * det == 0 when this returns 1, i.e. when 2 * bound <= 2^(degree L). */
+int fl_lattice_zero(const double *const *pts, int n, int dim, int weighted, int degree,
+                    double bound);
+
 #endif /* FL_PREDICATES_INTERNAL_H */

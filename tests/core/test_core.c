@@ -9,7 +9,8 @@
 static void test_error_format_names_file_and_line(void)
 {
     fl_error err;
-    fl_status s = fl_fail(&err, FL_ERR_INPUT, "points.xyz", 17, "expected %d numbers, got %d", 3, 2);
+    fl_status s =
+        fl_fail(&err, FL_ERR_INPUT, "points.xyz", 17, "expected %d numbers, got %d", 3, 2);
     CHECK_EQ_INT(s, FL_ERR_INPUT);
     char buf[1200];
     fl_error_format(&err, buf, sizeof buf);
@@ -18,6 +19,15 @@ static void test_error_format_names_file_and_line(void)
     fl_error_format(&err, buf, sizeof buf);
     CHECK(strcmp(buf, "a.ply: byte 1234: truncated") == 0);
     CHECK_EQ_INT(fl_fail(NULL, FL_ERR_IO, NULL, -1, "x"), FL_ERR_IO);
+}
+
+static void test_vec_push_of_nothing_on_empty_vec_is_defined(void)
+{
+    fl_vec v;
+    fl_vec_init(&v, sizeof(double));
+    CHECK(fl_vec_push(&v, NULL, 0) == 0);
+    CHECK(v.count == 0 && v.data == NULL);
+    fl_vec_free(&v);
 }
 
 static void test_alloc_array_refuses_overflowing_sizes(void)
@@ -34,11 +44,14 @@ static void test_vec_grows_and_keeps_contents(void)
 {
     fl_vec v;
     fl_vec_init(&v, sizeof(int));
-    for (int i = 0; i < 10000; i++) CHECK(fl_vec_push(&v, &i, 1) == 0);
+    for (int i = 0; i < 10000; i++)
+        CHECK(fl_vec_push(&v, &i, 1) == 0);
     CHECK_EQ_INT(v.count, 10000);
     int ok = 1;
-    for (int i = 0; i < 10000; i++) ok &= ((int *)v.data)[i] == i;
+    for (int i = 0; i < 10000; i++)
+        ok &= ((int *)v.data)[i] == i;
     CHECK(ok);
+    CHECK(fl_vec_push(&v, NULL, 0) == 0 && v.count == 10000);
     int *p = fl_vec_release(&v);
     CHECK(p && p[9999] == 9999);
     CHECK(v.data == NULL && v.count == 0);
@@ -88,5 +101,6 @@ static void test_path_extension_is_lowercased(void)
 
 FL_TEST_MAIN(FL_TEST_CASE(test_error_format_names_file_and_line),
              FL_TEST_CASE(test_alloc_array_refuses_overflowing_sizes),
-             FL_TEST_CASE(test_vec_grows_and_keeps_contents), FL_TEST_CASE(test_out_file_is_atomic),
-             FL_TEST_CASE(test_path_extension_is_lowercased))
+             FL_TEST_CASE(test_vec_grows_and_keeps_contents),
+             FL_TEST_CASE(test_vec_push_of_nothing_on_empty_vec_is_defined),
+             FL_TEST_CASE(test_out_file_is_atomic), FL_TEST_CASE(test_path_extension_is_lowercased))

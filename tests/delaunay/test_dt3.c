@@ -147,7 +147,7 @@ static void test_dt3_cospherical_integer_points(void)
                     p[3 * n + 2] = z;
                     n++;
                 }
-    CHECK(n > 100);
+    CHECK_EQ_INT(n, 150); /* r_3(225) */
     fl_dt3 dt;
     build_ok(p, n, &dt);
     CHECK_EQ_INT(dt.unique_count, n);
@@ -347,6 +347,82 @@ static void test_dt3_progress_reports_and_cancels(void)
     free(p);
 }
 
+/* A triangulation assembled by hand: tetrahedra (reoriented to be positive), adjacency and hull
+ * faces by brute-force face matching. */
+static void assemble(const double *p, size_t n, const uint32_t *tets, size_t nt, fl_dt3 *dt)
+{
+    static const int face[4][3] = {{1, 3, 2}, {0, 2, 3}, {0, 3, 1}, {0, 1, 2}};
+    memset(dt, 0, sizeof *dt);
+    dt->point_count = dt->unique_count = n;
+    dt->duplicate_of = malloc(n * sizeof(uint32_t));
+    for (size_t i = 0; i < n; i++)
+        dt->duplicate_of[i] = (uint32_t)i;
+    dt->tet_count = nt;
+    dt->tet = malloc(4 * nt * sizeof(uint32_t));
+    dt->adj = malloc(4 * nt * sizeof(uint32_t));
+    dt->hull_faces = malloc(12 * nt * sizeof(uint32_t));
+    memcpy(dt->tet, tets, 4 * nt * sizeof(uint32_t));
+    for (size_t t = 0; t < nt; t++) {
+        uint32_t *q = dt->tet + 4 * t;
+        if (fl_orient3d(p + 3 * q[0], p + 3 * q[1], p + 3 * q[2], p + 3 * q[3]) < 0) {
+            uint32_t x = q[0];
+            q[0] = q[1];
+            q[1] = x;
+        }
+    }
+    for (size_t t = 0; t < nt; t++)
+        for (int k = 0; k < 4; k++) {
+            dt->adj[4 * t + k] = UINT32_MAX;
+            for (size_t u = 0; u < nt; u++) {
+                int shared = 0;
+                for (int i = 0; i < 4; i++)
+                    for (int j = 0; j < 4; j++)
+                        shared += i != k && dt->tet[4 * t + i] == dt->tet[4 * u + j];
+                if (u != t && shared == 3) dt->adj[4 * t + k] = (uint32_t)u;
+            }
+            if (dt->adj[4 * t + k] != UINT32_MAX) continue;
+            for (int i = 0; i < 3; i++)
+                dt->hull_faces[3 * dt->hull_face_count + i] = dt->tet[4 * t + face[k][i]];
+            dt->hull_face_count++;
+        }
+}
+
+/* Five points whose Delaunay triangulation is two tetrahedra on triangle abc; the three
+ * tetrahedra around edge de fill the same hull but are not Delaunay. Verify must see it, and
+ * also a flipped tetrahedron, broken adjacency and a point left out. */
+static void test_dt3_verify_rejects_broken_triangulations(void)
+{
+    const double p[] = {0, 0, 0, 4, 0, 0, 0, 4, 0, 1, 1, 5, 1, 1, -5, 1, 1, 1};
+    const uint32_t two[] = {0, 1, 2, 3, 0, 1, 2, 4};
+    const uint32_t three[] = {3, 4, 0, 1, 3, 4, 1, 2, 3, 4, 2, 0};
+    fl_dt3 dt, built;
+    fl_error err;
+    assemble(p, 5, two, 2, &dt);
+    CHECK_STATUS(fl_dt3_verify(p, &dt, &err), FL_OK, &err);
+    CHECK_STATUS(fl_dt3_build(p, 5, NULL, &built, &err), FL_OK, &err);
+    CHECK_EQ_INT(built.tet_count, 2);
+    fl_dt3_free(&built);
+    uint32_t x = dt.tet[0];
+    dt.tet[0] = dt.tet[1];
+    dt.tet[1] = x;
+    CHECK_STATUS(fl_dt3_verify(p, &dt, &err), FL_ERR_ALGORITHM, &err);
+    CHECK(strstr(err.message, "oriented") != NULL);
+    fl_dt3_free(&dt);
+
+    assemble(p, 5, three, 3, &dt);
+    CHECK_EQ_INT(dt.hull_face_count, 6);
+    CHECK_STATUS(fl_dt3_verify(p, &dt, &err), FL_ERR_ALGORITHM, &err);
+    CHECK(strstr(err.message, "inside the circumsphere") != NULL);
+    dt.adj[0] = dt.adj[0] == UINT32_MAX ? 1 : UINT32_MAX;
+    CHECK_STATUS(fl_dt3_verify(p, &dt, &err), FL_ERR_ALGORITHM, &err);
+    fl_dt3_free(&dt);
+
+    assemble(p, 6, two, 2, &dt); /* point 5 = (1,1,1) is inside but not a vertex */
+    CHECK_STATUS(fl_dt3_verify(p, &dt, &err), FL_ERR_ALGORITHM, &err);
+    CHECK(strstr(err.message, "should be vertices") != NULL);
+    fl_dt3_free(&dt);
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_dt3_valid_and_empty_spheres_on_random_shapes),
              FL_TEST_CASE(test_dt3_valid_on_ten_thousand_points),
              FL_TEST_CASE(test_dt3_empty_sphere_on_integer_grid),
@@ -358,4 +434,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_dt3_valid_and_empty_spheres_on_random_shapes),
              FL_TEST_CASE(test_dt3_lower_dimensional_input_is_a_clear_error),
              FL_TEST_CASE(test_dt3_coplanar_points_plus_one),
              FL_TEST_CASE(test_dt3_circumcenters_are_equidistant),
-             FL_TEST_CASE(test_dt3_progress_reports_and_cancels))
+             FL_TEST_CASE(test_dt3_progress_reports_and_cancels),
+             FL_TEST_CASE(test_dt3_verify_rejects_broken_triangulations))

@@ -153,6 +153,29 @@ static void gen_degenerate(int k, double p[5][4], unsigned long long *s)
     }
 }
 
+/* Exactly degenerate with full-precision random coordinates, so no coarse lattice settles them:
+ * points (x, 2x) on a line, (x, y, 2x) on a plane, corners (+-x, +-y[, +-z]) of a box on one
+ * circle / sphere (equal random weights in the power tests). */
+static void gen_degenerate_wide(int k, double p[5][4], unsigned long long *s)
+{
+    int dim = kinds[k].dim;
+    double box[3] = {uniform(s, 0.1, 10), uniform(s, 0.1, 10), uniform(s, 0.1, 10)};
+    double w = uniform(s, -1, 1);
+    for (int i = 0; i < npoints(k); i++) {
+        double x = uniform(s, -10, 10), y = uniform(s, -10, 10);
+        if (!kinds[k].lifted) {
+            p[i][0] = x;
+            p[i][1] = dim == 2 ? 2 * x : y;
+            p[i][2] = 2 * x;
+        } else {
+            int corner = rand_int(s, 0, 7);
+            for (int j = 0; j < dim; j++)
+                p[i][j] = (corner >> j & 1) ? box[j] : -box[j];
+            p[i][dim] = w;
+        }
+    }
+}
+
 /* Near-degenerate: points computed in floating point on a line / plane / circle / sphere (so
  * off it by rounding), then moved by 0 or 1 ulp. */
 static void gen_near(int k, double p[5][4], unsigned long long *s)
@@ -246,27 +269,32 @@ static void run_generator(const char *name, generator g, int count, int expect_z
 
 static void test_exact_sign_on_uniform_random_points(void)
 {
-    run_generator("uniform", gen_uniform, 3000, 0);
+    run_generator("uniform", gen_uniform, 2000, 0);
 }
 
 static void test_exact_sign_on_ulp_perturbed_integer_grid(void)
 {
-    run_generator("grid+ulp", gen_grid_ulp, 4000, 0);
+    run_generator("grid+ulp", gen_grid_ulp, 2500, 0);
 }
 
 static void test_exact_sign_on_exactly_degenerate_points(void)
 {
-    run_generator("degenerate", gen_degenerate, 3000, 1);
+    run_generator("degenerate", gen_degenerate, 2000, 1);
+}
+
+static void test_exact_sign_on_degenerate_points_with_full_precision_coordinates(void)
+{
+    run_generator("degenerate wide", gen_degenerate_wide, 1000, 1);
 }
 
 static void test_exact_sign_on_nearly_degenerate_points(void)
 {
-    run_generator("near", gen_near, 4000, 0);
+    run_generator("near", gen_near, 2500, 0);
 }
 
 static void test_exact_sign_on_values_of_any_exponent(void)
 {
-    run_generator("wild exponent", gen_wild_exponents, 3000, 0);
+    run_generator("wild exponent", gen_wild_exponents, 2000, 0);
 }
 
 /* The documented conventions on configurations whose answer is known in closed form. */
@@ -332,5 +360,6 @@ FL_TEST_MAIN(FL_TEST_CASE(test_sign_conventions_match_the_documentation),
              FL_TEST_CASE(test_exact_sign_on_uniform_random_points),
              FL_TEST_CASE(test_exact_sign_on_ulp_perturbed_integer_grid),
              FL_TEST_CASE(test_exact_sign_on_exactly_degenerate_points),
+             FL_TEST_CASE(test_exact_sign_on_degenerate_points_with_full_precision_coordinates),
              FL_TEST_CASE(test_exact_sign_on_nearly_degenerate_points),
              FL_TEST_CASE(test_exact_sign_on_values_of_any_exponent))

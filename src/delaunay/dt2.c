@@ -34,12 +34,6 @@ typedef struct dt2_tri {
     uint32_t nb[3];
 } dt2_tri;
 
-/* A cavity-search frame: triangle t, next edge to look across, edges left to look across. */
-typedef struct dt2_frame {
-    uint32_t t;
-    uint16_t edge, left;
-} dt2_frame;
-
 /* Inside the builder a vertex is its rank in the insertion order: the coordinates are copied in
  * that order, so the points a walk or cavity touches are close in memory as well as in space
  * (input indices of spatial neighbours are scattered). SoS still uses the input indices, so the
@@ -49,8 +43,9 @@ typedef struct dt2_builder {
     const uint32_t *id; /* rank -> input index */
     dt2_tri *tri;
     size_t count, capacity;
-    dt2_frame *stack;
-    uint32_t *cavity, *boundary; /* boundary: (a, b, outside code) triples, in cyclic order */
+    uint32_t *stack;    /* cavity-search frames: (triangle, next edge | edges left << 2) */
+    uint32_t *cavity;   /* triangles of the cavity */
+    uint32_t *boundary; /* (a, b, outside code) triples, in cyclic order */
     size_t stack_cap, cavity_cap, boundary_cap;
     uint32_t last; /* a real triangle near the last inserted point: the next walk's start */
     uint64_t rng;  /* for the stochastic walk */
@@ -124,20 +119,19 @@ static uint32_t locate(dt2_builder *b, uint32_t p)
     }
 }
 
-static int grow(void **a, size_t *cap, size_t need, size_t elem)
+/* Makes room for `need` entries; on failure the buffer is left as it was. */
+static int grow(uint32_t **a, size_t *cap, size_t need)
 {
     if (need <= *cap) return 0;
     size_t c = *cap ? *cap : 64;
     while (c < need)
         c *= 2;
-    void *p = fl_realloc_array(*a, c, elem);
+    uint32_t *p = fl_realloc_array(*a, c, sizeof *p);
     if (!p) return -1;
     *a = p;
     *cap = c;
     return 0;
 }
-
-#define GROW(arr, cap, need) grow((void **)&(arr), &(cap), (need), sizeof *(arr))
 
 /* Collects the conflict region of p, found depth first from t0, and its boundary edges, each
  * with its two vertices and the code of the triangle outside. The region is a tree of
@@ -148,28 +142,28 @@ static int grow(void **a, size_t *cap, size_t need, size_t elem)
 static int find_cavity(dt2_builder *b, uint32_t t0, uint32_t p, size_t *ncav, size_t *nbnd)
 {
     size_t top = 0, nc = 0, nb = 0;
-    b->stack[top++] = (dt2_frame){t0, 0, 3};
+    b->stack[top++] = t0;
+    b->stack[top++] = 0 | 3u << 2; /* edge 0 next, 3 edges left */
     b->cavity[nc++] = t0;
     while (top > 0) {
-        dt2_frame *f = &b->stack[top - 1];
-        if (f->left == 0) {
-            top--;
+        uint32_t frame = b->stack[top - 1], e = frame & 3, left = frame >> 2;
+        if (left == 0) {
+            top -= 2;
             continue;
         }
-        const dt2_tri *t = b->tri + f->t;
-        int e = f->edge;
-        f->edge = (uint16_t)(e == 2 ? 0 : e + 1);
-        f->left--;
+        const dt2_tri *t = b->tri + b->stack[top - 2];
+        b->stack[top - 1] = (e == 2 ? 0 : e + 1) | (left - 1) << 2;
         uint32_t code = t->nb[e], u = code >> 2;
         if (in_conflict(b, b->tri + u, p)) {
             if (nc >= b->count) return -2;
-            if (GROW(b->stack, b->stack_cap, top + 1) || GROW(b->cavity, b->cavity_cap, nc + 1))
+            if (grow(&b->stack, &b->stack_cap, top + 2) || grow(&b->cavity, &b->cavity_cap, nc + 1))
                 return -1;
-            uint16_t entry = (uint16_t)(code & 3);
-            b->stack[top++] = (dt2_frame){u, (uint16_t)(entry == 2 ? 0 : entry + 1), 2};
+            uint32_t entry = code & 3; /* skip the edge back to t: 2 edges left */
+            b->stack[top++] = u;
+            b->stack[top++] = (entry == 2 ? 0 : entry + 1) | 2u << 2;
             b->cavity[nc++] = u;
         } else {
-            if (GROW(b->boundary, b->boundary_cap, 3 * nb + 3)) return -1;
+            if (grow(&b->boundary, &b->boundary_cap, 3 * nb + 3)) return -1;
             b->boundary[3 * nb] = t->v[e == 2 ? 0 : e + 1];
             b->boundary[3 * nb + 1] = t->v[e == 0 ? 2 : e - 1];
             b->boundary[3 * nb + 2] = code;
@@ -286,8 +280,8 @@ static int builder_init(dt2_builder *b, const double *xy, const uint32_t *order,
             b->xy[2 * i] = xy[2 * (size_t)order[i]];
             b->xy[2 * i + 1] = xy[2 * (size_t)order[i] + 1];
         }
-    if (!b->xy || !b->tri || GROW(b->stack, b->stack_cap, 64) ||
-        GROW(b->cavity, b->cavity_cap, 64) || GROW(b->boundary, b->boundary_cap, 192))
+    if (!b->xy || !b->tri || grow(&b->stack, &b->stack_cap, 128) ||
+        grow(&b->cavity, &b->cavity_cap, 64) || grow(&b->boundary, &b->boundary_cap, 192))
         return -1;
     return 0;
 }

@@ -27,8 +27,8 @@
 #define PROGRESS_EVERY 65536
 
 /* A triangle: vertices counterclockwise and, across the edge opposite corner k, the neighbour
- * code (triangle << 2) | (index of that edge in the neighbour). One record, 24 bytes, so that a
- * walk or cavity step touches one cache line. */
+ * code (triangle << 2) | (index of that edge in the neighbour). One 24-byte record, so that a
+ * walk or cavity step usually touches a single cache line. */
 typedef struct dt2_tri {
     uint32_t v[3];
     uint32_t nb[3];

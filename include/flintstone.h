@@ -146,15 +146,14 @@ int fl_insphere_weighted(const double *a, const double *b, const double *c, cons
 /* Symbolically perturbed predicates (Simulation of Simplicity). Each point carries a global
  * index (its position in the caller's input); the indices of one call must be pairwise
  * distinct. The perturbation depends only on (coordinates, index), so all answers of one
- * family are consistent with a single perturbed configuration. Every _sos function returns
- * the unperturbed sign whenever that is nonzero, and for any argument order:
- *  - swapping two arguments together with their indices flips the sign (the result depends
- *    only on the set of (point, index) pairs and the parity of their order);
+ * family are consistent with a single perturbed configuration. Every _sos function:
+ *  - returns the unperturbed sign whenever that is nonzero;
+ *  - flips its sign when two arguments are swapped together with their indices (the result
+ *    depends only on the set of (point, index) pairs and the parity of their order).
  *
  * Orientation (Edelsbrunner-Mucke): coordinate j (0-based) of the point with index i is moved
  * by eps^(2^(i*dim + dim-1-j)) for an infinitesimal eps > 0: a lower index moves more, and
- * within a point the last coordinate moves most. Never returns 0, even for coincident points.
- */
+ * within a point the last coordinate moves most. Never returns 0, even for coincident points. */
 int fl_orient2d_sos(const double *a, const double *b, const double *c, uint32_t ia, uint32_t ib,
                     uint32_t ic);
 int fl_orient3d_sos(const double *a, const double *b, const double *c, const double *d,
@@ -163,17 +162,18 @@ int fl_orient3d_sos(const double *a, const double *b, const double *c, const dou
 /* In-circle / in-sphere (Devillers-Teillaud style, for Delaunay and regular triangulations):
  * coordinates are NOT perturbed; only the lifted coordinate is, as if the point with index i
  * had weight w + eps^(2^32 - i): a higher index is perturbed more (is "heavier"). The
- * perturbed determinant is det + sum_k eps_k * cofactor_k, and each cofactor is, up to sign,
- * the orientation of the other points, so a zero determinant is decided by the orientation
- * of the remaining points after dropping the highest-index point, then the next, and so on.
- * Consequences callers can rely on:
- *  - the result is nonzero whenever fl_orient2d(a, b, c) != 0 (fl_orient3d(a, b, c, d) != 0),
- *    and more generally unless all points are collinear (coplanar), when it is 0;
+ * determinant is linear in the lift, and the coefficient of point k's perturbation is, up to
+ * a sign fixed by k's argument position, the orientation of the other points; so a zero
+ * determinant is decided by the orientation of the points left after dropping the
+ * highest-index point, else the next highest, and so on. Callers can rely on:
+ *  - the result is nonzero whenever fl_orient2d(a, b, c) != 0 (fl_orient3d(a, b, c, d) != 0);
+ *    it is 0 exactly when all the points are collinear (coplanar);
  *  - a point d exactly on the circle through a, b, c (orient2d(a, b, c) = +1) with a higher
- *    index than a, b and c is reported inside (+1): a later-inserted point on the circle is
- *    in conflict;
- *  - the orientation predicates are unperturbed in this family: use fl_orient2d/3d (not _sos)
- *    alongside these, and never call them on flat triangles/tetrahedra.
+ *    index than a, b and c is reported inside (+1): a later-inserted cocircular point is in
+ *    conflict;
+ *  - coordinates are unperturbed in this family, so it pairs with the plain fl_orient2d/3d,
+ *    not with fl_orient*_sos (a different perturbation). On a flat triangle/tetrahedron the
+ *    answer is still consistent with the perturbed lifted points but describes no circle.
  * The weighted versions use the same rule on the weight (the lift is |p|^2 - w). */
 int fl_incircle_sos(const double *a, const double *b, const double *c, const double *d,
                     uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id);

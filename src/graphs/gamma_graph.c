@@ -33,19 +33,20 @@ fl_status gamma_brute_force(const double *coords, size_t n, int dim, const fl_ga
 {
     fl_progress_fn progress = opt ? opt->progress : NULL;
     void *user = opt ? opt->progress_user : NULL;
-    uint32_t s[3];
+    uint32_t s[3] = {0, 0, 0};
     for (size_t i = 0; i < n; i++) {
         if (fl_progress(progress, user, "gamma brute force", (double)i / (double)n))
             return cancelled(err);
         s[0] = (uint32_t)i;
         for (size_t j = i + 1; j < n; j++) {
             s[1] = (uint32_t)j;
-            for (size_t k = dim == 3 ? j + 1 : n; k < n || dim == 2; k++) {
-                if (dim == 3) s[2] = (uint32_t)k;
-                fl_status st = add_if_accepted(coords, n, dim, p, part, s, b, err);
-                if (st != FL_OK) return st;
-                if (dim == 2) break;
+            fl_status st = FL_OK;
+            if (dim == 2) st = add_if_accepted(coords, n, dim, p, part, s, b, err);
+            for (size_t k = j + 1; dim == 3 && k < n && st == FL_OK; k++) {
+                s[2] = (uint32_t)k;
+                st = add_if_accepted(coords, n, dim, p, part, s, b, err);
             }
+            if (st != FL_OK) return st;
         }
     }
     return FL_OK;

@@ -24,13 +24,12 @@ int gamma_in_sphere(const double *a, const double *b, const double *c, const dou
 
 /* Exact sign of sum_k coef[k] * (x[k]-y[k]).(u[k]-w[k]) over dim coordinates (terms <= 2). */
 int gamma_exact_sum_sign(int terms, const double *coef, const double *const *x,
-                         const double *const *y, const double *const *u,
-                         const double *const *w, int dim);
+                         const double *const *y, const double *const *u, const double *const *w,
+                         int dim);
 /* Sign of (p-a).(p-b): -1 iff p is strictly inside the ball with diameter ab (Def. 2.9). */
 int gamma_diametral_sign(const double *a, const double *b, const double *p, int dim);
 /* Sign of |a-b|^2 - |c-d|^2. */
-int gamma_compare_dist(const double *a, const double *b, const double *c, const double *d,
-                       int dim);
+int gamma_compare_dist(const double *a, const double *b, const double *c, const double *d, int dim);
 
 /* A (k-1)-simplex of k vertices in kD with the floating frame its balls are built on: the
  * centre `center` and radius `r` of the smallest ball touching the vertices, and the unit
@@ -51,6 +50,10 @@ int gamma_frame_init(gamma_frame *f, const double *coords, int dim, const uint32
 
 /* Exact side of p with respect to H: +1 on the normal's side, -1 opposite, 0 on H. */
 int gamma_frame_side(const gamma_frame *f, const double *p);
+
+/* tau(p): the centre offset of the ball through the vertices and p, for p off H on side `side`
+ * (the exact side). Floating construction; in 2D its sign is exact. */
+double gamma_frame_offset(const gamma_frame *f, const double *p, int side);
 
 /* What the other points tell about the simplex's balls (thesis §3.3). Over the points added:
  * `up` is the point on the + side whose ball B(tau) has the smallest centre offset tau (no other

@@ -74,8 +74,8 @@ static void grow(double *e, int *n, double b)
 }
 
 int gamma_exact_sum_sign(int terms, const double *coef, const double *const *x,
-                         const double *const *y, const double *const *u,
-                         const double *const *w, int dim)
+                         const double *const *y, const double *const *u, const double *const *w,
+                         int dim)
 {
     double e[512];
     int n = 0;
@@ -105,8 +105,7 @@ int gamma_diametral_sign(const double *a, const double *b, const double *p, int 
     return gamma_exact_sum_sign(1, &one, x, y, u, w, dim);
 }
 
-int gamma_compare_dist(const double *a, const double *b, const double *c, const double *d,
-                       int dim)
+int gamma_compare_dist(const double *a, const double *b, const double *c, const double *d, int dim)
 {
     const double coef[2] = {1, -1}, *x[2] = {a, c}, *y[2] = {b, d};
     return gamma_exact_sum_sign(2, coef, x, y, x, y, dim);

@@ -184,10 +184,8 @@ void gamma_summary_add(gamma_summary *s, const gamma_frame *f, const double *coo
     if (in > 0 || (in == 0 && i < *w)) *w = i;
 }
 
-/* tau(w) of a witness, with the sign of h taken from the exact side. */
-static double witness_offset(const gamma_frame *f, const double *coords, uint32_t w, int side)
+double gamma_frame_offset(const gamma_frame *f, const double *p, int side)
 {
-    const double *p = coords + (size_t)w * (size_t)f->dim;
     const double *a = f->v[0];
     double d[3] = {0, 0, 0}, ca[3] = {0, 0, 0};
     for (int i = 0; i < f->dim; i++) {
@@ -278,8 +276,10 @@ void gamma_summary_value(const gamma_summary *s, const gamma_frame *f, const dou
         return;
     }
     int has_up = s->up != GAMMA_NONE, has_lo = s->lo != GAMMA_NONE;
-    double tu = has_up ? witness_offset(f, coords, s->up, +1) : INFINITY;
-    double tl = has_lo ? witness_offset(f, coords, s->lo, -1) : -INFINITY;
+    double tu =
+        has_up ? gamma_frame_offset(f, coords + (size_t)s->up * (size_t)f->dim, +1) : INFINITY;
+    double tl =
+        has_lo ? gamma_frame_offset(f, coords + (size_t)s->lo * (size_t)f->dim, -1) : -INFINITY;
     int empty_ball;
     if (!has_up || !has_lo)
         empty_ball = 1;

@@ -153,9 +153,10 @@ static inline int oracle_in_ball(int dim, const double *const *pts, const double
     int lifted = oracle_lifted_det_sign(dim + 2, dim, rows);
     int orient = dim == 2 ? oracle_orient2(pts[0], pts[1], pts[2])
                           : oracle_side3(pts[0], pts[1], pts[2], pts[3]);
-    /* det[p, |p|^2, 1] over (simplex, e) is negative for e inside a positively oriented
-     * simplex in 2D and positive in 3D with this orientation convention. */
-    return dim == 2 ? -lifted * orient : lifted * orient;
+    /* det[p, |p|^2, 1] over (simplex, e) is positive for e inside a counter-clockwise
+     * triangle, and negative inside a tetrahedron positive in oracle_side3's convention
+     * (checked on the unit simplex in test_oracle_in_ball_signs). */
+    return dim == 2 ? lifted * orient : -lifted * orient;
 }
 
 /* Sign of (p-a).(p-b): < 0 iff p is strictly inside the ball with diameter ab. */

@@ -150,7 +150,51 @@ static void test_gamma_lemma_3_3_nested_ranges_nest(void)
     }
 }
 
-FL_TEST_MAIN(FL_TEST_CASE(test_gamma_fixed_2d_matches_definition_3_1),
+/* A point on the open edge lies in every neighbourhood (Def. 3.1: the open simplex is always
+ * part of it), so that edge has no largest empty neighbourhood; bad arguments are refused. */
+static void test_simplex_params_of_a_blocked_edge_and_bad_arguments(void)
+{
+    const double p[8] = {0, 0, 1, 0, 2, 0, 0, 1};
+    uint32_t blocked[2] = {0, 2}, hull[2] = {0, 1}, same[2] = {1, 1}, outside[2] = {0, 4};
+    double c0 = 5, c1 = 5;
+    CHECK_EQ_INT(fl_gamma_simplex_params(p, 4, 2, blocked, &c0, &c1), 0);
+    CHECK_EQ_INT(fl_gamma_simplex_params(p, 4, 2, same, &c0, &c1), -1);
+    CHECK_EQ_INT(fl_gamma_simplex_params(p, 4, 2, outside, &c0, &c1), -1);
+    /* Edge 0-1: every point on or above the x axis, point 2 on the line beyond the edge: the
+     * lower half-plane is empty (c1' = 1), the upper side's witness is point 3, whose circle
+     * through (0,0),(1,0),(0,1) has centre (0.5,0.5): r = 0.5, t = 0.5, |c| = 1 - 1/sqrt(2),
+     * centre on the other side from the half-space, so c0' = +|c|. */
+    CHECK_EQ_INT(fl_gamma_simplex_params(p, 4, 2, hull, &c0, &c1), 1);
+    CHECK_NEAR(c1, 1.0, 0);
+    CHECK_NEAR(c0, 1 - 1 / sqrt(2.0), 1e-15);
+}
+
+static int cancel_at_once(void *user, const char *stage, double fraction)
+{
+    (void)stage;
+    (void)fraction;
+    ++*(int *)user;
+    return 1;
+}
+
+static void test_progress_callback_cancels_the_brute_force_and_lens_search(void)
+{
+    double *p = oracle_random_points(50, 2, 77);
+    int calls = 0;
+    fl_graph_options opt = {FL_GAMMA_BRUTE_FORCE, 0, cancel_at_once, &calls};
+    fl_gamma_params gp = {1, {-1, 1, -0.5, -0.1}};
+    fl_graph g;
+    fl_error err;
+    CHECK_STATUS(fl_gamma_graph(p, 50, 2, &gp, &opt, &g, &err), FL_ERR_ALGORITHM, &err);
+    opt.method = FL_GAMMA_AUTO;
+    CHECK_STATUS(fl_gamma_graph(p, 50, 2, &gp, &opt, &g, &err), FL_ERR_ALGORITHM, &err);
+    CHECK(calls == 2 && g.simplices == NULL);
+    free(p);
+}
+
+FL_TEST_MAIN(FL_TEST_CASE(test_simplex_params_of_a_blocked_edge_and_bad_arguments),
+             FL_TEST_CASE(test_progress_callback_cancels_the_brute_force_and_lens_search),
+             FL_TEST_CASE(test_gamma_fixed_2d_matches_definition_3_1),
              FL_TEST_CASE(test_gamma_fixed_3d_matches_definition_3_1),
              FL_TEST_CASE(test_gamma_params_are_the_largest_empty_neighbourhood),
              FL_TEST_CASE(test_gamma_lemmas_3_1_and_3_2_on_random_sets),

@@ -454,7 +454,16 @@ static void test_bad_input_is_reported_not_crashed(void)
     CHECK(kind == FL_GRAPH_BETA_LUNE && param == 0.25);
     CHECK_STATUS(fl_graph_kind_parse("alpha", &kind, &param, &err), FL_ERR_USAGE, &err);
     CHECK_STATUS(fl_graph_kind_parse("voronoi", &kind, &param, &err), FL_ERR_USAGE, &err);
-    fl_graph_free(&g); /* zeroed on failure: freeing is a no-op */
+    fl_graph_free(&g);                /* zeroed on failure: freeing is a no-op */
+    for (size_t n = 0; n <= 2; n++) { /* too few points for a simplex or a triangulation */
+        fl_gamma_params dt = {1, {-1, 1, 0, 1}};
+        CHECK_STATUS(fl_gamma_graph(p, n, 2, &dt, NULL, &g, &err), FL_OK, &err);
+        CHECK_EQ_INT(g.simplex_count, n == 2 ? 1 : 0);
+        fl_graph_free(&g);
+        CHECK_STATUS(fl_classic_graph(p, n, 2, FL_GRAPH_EMST, 0, &g, &err), FL_OK, &err);
+        CHECK_EQ_INT(g.simplex_count, n == 2 ? 1 : 0);
+        fl_graph_free(&g);
+    }
 }
 
 static void test_graph_writers_produce_the_simplices(void)

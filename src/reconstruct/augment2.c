@@ -186,7 +186,7 @@ int c2_push_graph_candidates(c2_state *s, uint32_t a)
     uint32_t b = s->bnext[a];
     for (size_t i = g.start[a]; i < g.start[a + 1]; i++) {
         uint32_t c = g.nb[i];
-        if (s->on_boundary[c] || !csr_has(&g, c, b)) continue;
+        if (s->on_boundary[c] || !csr_has(&g, c, b) || !c2_keep_allows(s, a, b, c)) continue;
         if (fl_orient2d(c2_pt(s, a), c2_pt(s, b), c2_pt(s, c)) <= 0) continue;
         c2_entry e = {c2_key(s, a, b, c, C2_NONE), a, b, c};
         if (c2_heap_push(&s->heap, e)) return -1;

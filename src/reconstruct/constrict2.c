@@ -16,7 +16,7 @@ int c2_push_candidates(c2_state *s, uint32_t a)
     uint32_t c = s->tri[3 * (size_t)t + (k + 2) % 3];
     /* §5.2: removable only when the opposite vertex is not on the boundary yet, so that the
      * new boundary a -> c -> b is again a simple polygon. */
-    if (s->on_boundary[c]) return 0;
+    if (s->on_boundary[c] || !c2_keep_allows(s, a, b, c)) return 0;
     c2_entry e = {c2_key(s, a, b, c, t), a, b, c};
     return c2_heap_push(&s->heap, e);
 }
@@ -61,7 +61,7 @@ static uint32_t face_apex(const c2_state *s, uint32_t a)
 static int try_delete(c2_state *s, c2_entry e)
 {
     if (!s->on_boundary[e.a] || s->bnext[e.a] != e.b || s->on_boundary[e.c]) return 0;
-    if (c2_is_kept(s, e.a, e.b)) return 0;
+    if (c2_is_kept(s, e.a, e.b) || !c2_keep_allows(s, e.a, e.b, e.c)) return 0;
     if (face_apex(s, e.a) != e.c) {
         if (!s->augmented) return 0;
         int r = c2_insert_segment(s, e.a, e.c);

@@ -66,6 +66,19 @@ static inline int c2_is_kept(const c2_state *s, uint32_t p, uint32_t q)
     return s->keep_nb[2 * (size_t)p] == q || s->keep_nb[2 * (size_t)p + 1] == q;
 }
 
+/* §5.7 extended to the moment a kept edge's second end joins the boundary: vertex c may join
+ * through triangle a b c only if each kept partner of c already on the boundary is a or b, so
+ * that the kept edge becomes a boundary edge then; otherwise it would end as a chord, which no
+ * later deletion can turn into a boundary edge without dropping the points beyond it. */
+static inline int c2_keep_allows(const c2_state *s, uint32_t a, uint32_t b, uint32_t c)
+{
+    for (int j = 0; j < 2; j++) {
+        uint32_t k = s->keep_nb[2 * (size_t)c + j];
+        if (k != C2_NONE && k != a && k != b && s->on_boundary[k]) return 0;
+    }
+    return 1;
+}
+
 /* Corner of triangle t holding vertex v, or -1. */
 static inline int c2_corner(const c2_state *s, uint32_t t, uint32_t v)
 {

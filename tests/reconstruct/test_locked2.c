@@ -132,5 +132,95 @@ static void test_random_sets_of_every_criterion_give_polygons_through_all_points
         }
 }
 
+/* A non-degenerate point set whose Delaunay triangulation has no Hamilton cycle, of the kind
+ * Dillencourt (1987) gave (thesis Fig. 5.7: two-connected, with ears on the hull). Found by hill
+ * climbing on the number of Hamilton cycles of the triangulation (moving one point at a time,
+ * counting cycles by the subset dynamic programme below) until it reached zero; the test
+ * re-establishes every property from scratch. */
+static const double nonhamiltonian14[] = {
+    0.87344180652821568, 0.75856344681734933,  0.42842007050772019, 0.56951737494597265,
+    0.33178206694350287, 0.12079442933831025,  0.66162753618051995, 0.4977587944365382,
+    0.24931437765604672, 0.3733486789191362,   1.061380461282702,   0.57142263460382703,
+    1.0819712406910245,  0.61515547399880977,  0.41377690945551904, 0.94684851530823433,
+    0.57503861134779222, 0.50406134087555188,  0.56799698533159326, 0.026450934615847022,
+    0.42877776357501485, 0.98596504046728051,  0.40125592015090722, 0.086491636777327255,
+    0.69623950916967547, 0.097119702240372849, 0.71260487395776595, 0.41460633247259954};
+
+/* Number of Hamilton cycles of the graph with adjacency bitmasks adj[0..n-1] (n <= 16), by
+ * dynamic programming over (visited set, last vertex) from vertex 0. */
+static double hamilton_cycles(int n, const uint32_t *adj)
+{
+    size_t full = (size_t)1 << n;
+    double *dp = calloc(full * (size_t)n, sizeof *dp), total = 0;
+    dp[1 * (size_t)n + 0] = 1;
+    for (size_t m = 1; m < full; m += 2)
+        for (int v = 0; v < n; v++) {
+            double c = dp[m * (size_t)n + (size_t)v];
+            for (int w = 0; w < n && c > 0; w++)
+                if ((adj[v] >> w & 1) && !(m >> w & 1))
+                    dp[(m | (1u << w)) * (size_t)n + (size_t)w] += c;
+        }
+    for (int v = 1; v < n; v++)
+        if (adj[v] & 1) total += dp[(full - 1) * (size_t)n + (size_t)v];
+    free(dp);
+    return total / 2;
+}
+
+static void check_non_hamiltonian_set(const double *xy, int n)
+{
+    /* non-degenerate: no four points cocircular, no three collinear */
+    int degenerate = 0;
+    for (int a = 0; a < n; a++)
+        for (int b = a + 1; b < n; b++)
+            for (int c = b + 1; c < n; c++) {
+                degenerate += fl_orient2d(xy + 2 * a, xy + 2 * b, xy + 2 * c) == 0;
+                for (int d = c + 1; d < n; d++)
+                    degenerate += fl_incircle(xy + 2 * a, xy + 2 * b, xy + 2 * c, xy + 2 * d) == 0;
+            }
+    CHECK_EQ_INT(degenerate, 0);
+    fl_dt2 dt;
+    fl_error err;
+    CHECK_STATUS(fl_dt2_build(xy, (size_t)n, NULL, &dt, &err), FL_OK, &err);
+    uint32_t adj[16] = {0};
+    for (size_t t = 0; t < dt.triangle_count; t++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t a = dt.tri[3 * t + k], b = dt.tri[3 * t + (k + 1) % 3];
+            adj[a] |= 1u << b, adj[b] |= 1u << a;
+            for (int p = 0; p < n;
+                 p++) /* brute-force empty circles: it is the Delaunay triangulation */
+                CHECK(fl_incircle(xy + 2 * dt.tri[3 * t], xy + 2 * dt.tri[3 * t + 1],
+                                  xy + 2 * dt.tri[3 * t + 2], xy + 2 * p) <= 0);
+        }
+    CHECK(hamilton_cycles(n, adj) == 0);
+    fl_dt2_free(&dt);
+
+    fl_reconstruct2_options pure = {0};
+    pure.extra_levels = -1;
+    fl_reconstruction2 a, b;
+    CHECK_STATUS(fl_reconstruct2(xy, (size_t)n, &pure, &a, &err), FL_OK, &err);
+    rt_check_valid(xy, &a);
+    CHECK(!a.all_on_boundary); /* no Hamilton polygon exists in the Delaunay triangulation */
+    CHECK(is_locked(&a, (size_t)n));
+    CHECK_STATUS(fl_reconstruct2(xy, (size_t)n, NULL, &b, &err), FL_OK, &err);
+    rt_check_valid(xy, &b);
+    CHECK_MSG(b.all_on_boundary, "%s", b.reason);
+    CHECK(b.augmented_c0 >= -1 && b.augmented_c0 < 0);
+    check_boundary_edges_in_gamma_graph(xy, (size_t)n, &b);
+    fl_reconstruction2_free(&a);
+    fl_reconstruction2_free(&b);
+}
+
+static void test_non_hamiltonian_delaunay_triangulation_is_solved_by_augmentation(void)
+{
+    int n = (int)(sizeof nonhamiltonian14 / sizeof nonhamiltonian14[0] / 2);
+    double xy[2 * 16];
+    check_non_hamiltonian_set(nonhamiltonian14, n);
+    for (int i = 0; i < n; i++) /* mirrored and scaled by 2^10: exact, same combinatorics */
+        xy[2 * i] = -1024 * nonhamiltonian14[2 * i],
+               xy[2 * i + 1] = 1024 * nonhamiltonian14[2 * i + 1];
+    check_non_hamiltonian_set(xy, n);
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_locked_delaunay_constriction_is_completed_by_augmentation),
-             FL_TEST_CASE(test_random_sets_of_every_criterion_give_polygons_through_all_points))
+             FL_TEST_CASE(test_random_sets_of_every_criterion_give_polygons_through_all_points),
+             FL_TEST_CASE(test_non_hamiltonian_delaunay_triangulation_is_solved_by_augmentation))

@@ -221,6 +221,60 @@ static void test_non_hamiltonian_delaunay_triangulation_is_solved_by_augmentatio
     check_non_hamiltonian_set(xy, n);
 }
 
+/* extra_levels = L tries c0 = -1/L, -2/L, ..., -1 in turn and reports the first that finished. */
+static void test_augmented_c0_is_one_of_the_requested_levels(void)
+{
+    int seen = 0;
+    for (unsigned long long seed = 1; seed <= 30; seed++) {
+        size_t n = 40;
+        double *xy = random_points(n, seed);
+        fl_reconstruct2_options one = {0}, ten = {0};
+        one.extra_levels = 1;
+        fl_reconstruction2 a, b;
+        fl_error err;
+        CHECK_STATUS(fl_reconstruct2(xy, n, &one, &a, &err), FL_OK, &err);
+        CHECK_STATUS(fl_reconstruct2(xy, n, &ten, &b, &err), FL_OK, &err);
+        CHECK(a.all_on_boundary && b.all_on_boundary);
+        CHECK(isnan(a.augmented_c0) == isnan(b.augmented_c0));
+        if (!isnan(a.augmented_c0)) {
+            seen++;
+            CHECK(a.augmented_c0 == -1);
+            double k = -10 * b.augmented_c0;
+            CHECK(k >= 1 && k <= 10 && fabs(k - round(k)) < 1e-9);
+        }
+        fl_reconstruction2_free(&a);
+        fl_reconstruction2_free(&b);
+        free(xy);
+    }
+    CHECK(seen > 0);
+}
+
+static int cancel_constriction(void *user, const char *stage, double fraction)
+{
+    (void)fraction;
+    ++*(int *)user;
+    return strcmp(stage, "constriction") == 0;
+}
+
+static void test_progress_callback_can_cancel_constriction(void)
+{
+    size_t n = 20000;
+    double *xy = rt_star(n, 5, 0.4);
+    int calls = 0;
+    fl_reconstruct2_options opt = {0};
+    opt.progress = cancel_constriction;
+    opt.progress_user = &calls;
+    fl_reconstruction2 rec;
+    fl_error err;
+    CHECK_STATUS(fl_reconstruct2(xy, n, &opt, &rec, &err), FL_ERR_ALGORITHM, &err);
+    CHECK(strstr(err.message, "cancelled") != NULL);
+    CHECK(rec.boundary == NULL);
+    CHECK(calls > 0);
+    free(xy);
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_locked_delaunay_constriction_is_completed_by_augmentation),
              FL_TEST_CASE(test_random_sets_of_every_criterion_give_polygons_through_all_points),
-             FL_TEST_CASE(test_non_hamiltonian_delaunay_triangulation_is_solved_by_augmentation))
+             FL_TEST_CASE(test_non_hamiltonian_delaunay_triangulation_is_solved_by_augmentation),
+             FL_TEST_CASE(test_augmented_c0_is_one_of_the_requested_levels),
+             FL_TEST_CASE(test_progress_callback_can_cancel_constriction))

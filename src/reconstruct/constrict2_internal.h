@@ -104,6 +104,9 @@ int c2_push_candidates(c2_state *s, uint32_t a);
  * leaves the region, passes through a vertex or crosses a kept edge; 1 on success, -1 when
  * out of memory. */
 int c2_insert_segment(c2_state *s, uint32_t a, uint32_t b);
+/* Restores the constrained Delaunay property around the kept edges by Lawson's flips.
+ * 0, or -1 when out of memory. */
+int c2_restore_delaunay(c2_state *s);
 /* The living triangle having directed edge a->b, or C2_NONE. */
 uint32_t c2_find_edge(const c2_state *s, uint32_t a, uint32_t b);
 

@@ -225,3 +225,44 @@ int c2_insert_segment(c2_state *s, uint32_t a, uint32_t b)
     free(w.slots);
     return r;
 }
+
+/* Lawson's flips with the kept edges fixed: flip every edge whose opposite vertex lies strictly
+ * inside the circumcircle of the triangle across it, until none does. Flipping only strict
+ * violations (exact fl_incircle) terminates, and the result is the constrained Delaunay
+ * triangulation of the points and the kept edges: the γ([-1,1],[0,1]) of the thesis with the
+ * edges of F put in, as close to Delaunay as F allows. 0, or -1 when out of memory. */
+int c2_restore_delaunay(c2_state *s)
+{
+    size_t count = 3 * s->tcount, cap = count + 64;
+    uint32_t *stack = fl_alloc_array(cap, sizeof *stack);
+    if (!stack) return -1;
+    for (size_t i = 0; i < count; i++)
+        stack[i] = (uint32_t)i;
+    while (count > 0) {
+        uint32_t e = stack[--count], t = e / 3;
+        int k = (int)(e % 3);
+        uint32_t u = s->adj[e];
+        if (u == C2_NONE || !s->alive[t]) continue;
+        const uint32_t *v = s->tri + 3 * (size_t)t;
+        uint32_t p = v[(k + 1) % 3], q = v[(k + 2) % 3];
+        if (c2_is_kept(s, p, q)) continue;
+        uint32_t d = s->tri[3 * (size_t)u + 3 - c2_corner(s, u, p) - c2_corner(s, u, q)];
+        if (fl_incircle(c2_pt(s, v[0]), c2_pt(s, v[1]), c2_pt(s, v[2]), c2_pt(s, d)) <= 0) continue;
+        flip(s, t, k);
+        if (count + 6 > cap) {
+            uint32_t *grown = fl_realloc_array(stack, 2 * cap, sizeof *stack);
+            if (!grown) {
+                free(stack);
+                return -1;
+            }
+            stack = grown;
+            cap *= 2;
+        }
+        for (int j = 0; j < 3; j++) {
+            stack[count++] = 3 * t + (uint32_t)j;
+            stack[count++] = 3 * u + (uint32_t)j;
+        }
+    }
+    free(stack);
+    return 0;
+}

@@ -1,8 +1,10 @@
 /* Constrained constriction (thesis §5.7): edges F the user requires on the boundary. Each edge
  * of F is brought into the triangulation before constriction starts, by flipping away the
- * Delaunay edges that cross it. §5.7 makes the same exchange lazily, when a boundary triangle
- * v_i v_j v_k crossed by an F edge v_j v_l is selected: v_i v_k leaves the graph and v_i v_j v_l
- * becomes the boundary triangle; doing it up front gives the triangle v_i v_j v_l directly.
+ * Delaunay edges that cross it, and the triangulation is then made constrained Delaunay.
+ * §5.7 makes this exchange lazily, when a boundary triangle v_i v_j v_k crossed by an F edge
+ * v_j v_l is selected: v_i v_k leaves the graph and v_i v_j v_l becomes the boundary triangle;
+ * doing it up front gives triangles on F directly (those of the constrained Delaunay
+ * triangulation, where the lazy exchange would pick the one with the selected edge).
  * Edges of F are then never removable, never flipped, and never crossed by an extra edge of the
  * augmentation, so no deletion can take them out of the graph. */
 #include "reconstruct/constrict2_internal.h"
@@ -50,5 +52,7 @@ fl_status c2_keep_edges(c2_state *s, const uint32_t *rep, const uint32_t *keep, 
                            "a point",
                            i, keep[2 * i], keep[2 * i + 1]);
     }
+    if (c2_restore_delaunay(s))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for kept edges");
     return FL_OK;
 }

@@ -93,6 +93,39 @@ static void test_keeping_the_whole_curve_gives_it_back(void)
     free(xy);
 }
 
+/* Edges that the unconstrained constriction puts on the boundary anyway are Delaunay edges that
+ * are never deleted; keeping them constrains nothing, so the result must be the same. */
+static void test_keeping_edges_of_the_free_result_changes_nothing(void)
+{
+    for (unsigned long long seed = 50; seed < 60; seed++) {
+        size_t n = 80;
+        double *xy = malloc(2 * n * sizeof *xy);
+        unsigned long long st = seed;
+        for (size_t i = 0; i < 2 * n; i++)
+            xy[i] = fl_test_rand01(&st);
+        fl_reconstruct2_options pure = {0};
+        pure.extra_levels = -1;
+        fl_reconstruction2 a, b;
+        fl_error err;
+        CHECK_STATUS(fl_reconstruct2(xy, n, &pure, &a, &err), FL_OK, &err);
+        uint32_t keep[2 * 10];
+        size_t count = 0;
+        for (size_t i = 0; i < a.boundary_count && count < 10; i += 7, count++)
+            keep[2 * count] = a.boundary[i],
+                     keep[2 * count + 1] = a.boundary[(i + 1) % a.boundary_count];
+        pure.keep = keep;
+        pure.keep_count = count;
+        CHECK_STATUS(fl_reconstruct2(xy, n, &pure, &b, &err), FL_OK, &err);
+        CHECK_EQ_INT(a.boundary_count, b.boundary_count);
+        CHECK(a.boundary_count == b.boundary_count &&
+              memcmp(a.boundary, b.boundary, a.boundary_count * sizeof *a.boundary) == 0);
+        CHECK_EQ_INT(a.all_on_boundary, b.all_on_boundary);
+        fl_reconstruction2_free(&a);
+        fl_reconstruction2_free(&b);
+        free(xy);
+    }
+}
+
 static void test_impossible_kept_edges_are_rejected(void)
 {
     const double xy[] = {0, 0, 2, 0, 2, 2, 0, 2, 1, 1, 3, 3, 1, 0.5};
@@ -122,4 +155,5 @@ static void test_impossible_kept_edges_are_rejected(void)
 FL_TEST_MAIN(FL_TEST_CASE(test_kept_chord_cutting_off_a_hull_point_is_reported_impossible),
              FL_TEST_CASE(test_kept_edges_end_up_on_the_boundary),
              FL_TEST_CASE(test_keeping_the_whole_curve_gives_it_back),
+             FL_TEST_CASE(test_keeping_edges_of_the_free_result_changes_nothing),
              FL_TEST_CASE(test_impossible_kept_edges_are_rejected))

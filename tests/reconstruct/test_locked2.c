@@ -132,7 +132,7 @@ static void test_random_sets_of_every_criterion_give_polygons_through_all_points
         }
 }
 
-/* A non-degenerate point set whose Delaunay triangulation has no Hamilton cycle, of the kind
+/* Non-degenerate point sets whose Delaunay triangulations have no Hamilton cycle, of the kind
  * Dillencourt (1987) gave (thesis Fig. 5.7: two-connected, with ears on the hull). Found by hill
  * climbing on the number of Hamilton cycles of the triangulation (moving one point at a time,
  * counting cycles by the subset dynamic programme below) until it reached zero; the test
@@ -145,6 +145,15 @@ static const double nonhamiltonian14[] = {
     0.57503861134779222, 0.50406134087555188,  0.56799698533159326, 0.026450934615847022,
     0.42877776357501485, 0.98596504046728051,  0.40125592015090722, 0.086491636777327255,
     0.69623950916967547, 0.097119702240372849, 0.71260487395776595, 0.41460633247259954};
+
+static const double nonhamiltonian13[] = {
+    0.036781046409392733, -0.070515552665459225, -0.31171858618637505, -0.31004655372555334,
+    0.15243146863975288,  0.030459720470631044,  0.22805732788918942,  0.03217854611062735,
+    -0.47597884691188097, -0.38030421815555787,  0.57236812647075597,  0.47229287035284651,
+    0.78278716989161679,  0.23052821573958554,   0.81364665287029347,  0.92231825176826054,
+    0.74441575964962325,  0.91365670955339351,   1.0088963967012814,   0.34305966757201328,
+    0.45240863680887933,  0.63358004731375739,   0.58094201814991198,  0.40811400315046947,
+    0.90665228196368419,  0.65917932221027287};
 
 /* Number of Hamilton cycles of the graph with adjacency bitmasks adj[0..n-1] (n <= 16), by
  * dynamic programming over (visited set, last vertex) from vertex 0. */
@@ -219,6 +228,7 @@ static void test_non_hamiltonian_delaunay_triangulation_is_solved_by_augmentatio
         xy[2 * i] = -1024 * nonhamiltonian14[2 * i],
                xy[2 * i + 1] = 1024 * nonhamiltonian14[2 * i + 1];
     check_non_hamiltonian_set(xy, n);
+    check_non_hamiltonian_set(nonhamiltonian13, 13);
 }
 
 /* extra_levels = L tries c0 = -1/L, -2/L, ..., -1 in turn and reports the first that finished. */

@@ -1,4 +1,5 @@
 /* Internal state of 2D constriction (thesis ch. 5), shared by the files of src/reconstruct:
+ * reconstruct2.c (the public entry), reconstruct2_io.c (writing results),
  * constrict2.c (Algorithm 5.1 on the Delaunay triangulation), criteria2.c (the keys),
  * heap2.c (the priority queue), flip2.c (walking and inserting segments by edge flips),
  * augment2.c (locked constriction, §5.4) and keep2.c (constrained constriction, §5.7).
@@ -107,8 +108,6 @@ int c2_insert_segment(c2_state *s, uint32_t a, uint32_t b);
 /* Restores the constrained Delaunay property around the kept edges by Lawson's flips.
  * 0, or -1 when out of memory. */
 int c2_restore_delaunay(c2_state *s);
-/* The living triangle having directed edge a->b, or C2_NONE. */
-uint32_t c2_find_edge(const c2_state *s, uint32_t a, uint32_t b);
 
 /* augment2.c: the augmented constriction (§5.4) run after constriction of the Delaunay
  * triangulation locked. Tries c0 = -k/levels, k = 1..levels, and stores the c0 that brought

@@ -35,18 +35,6 @@ static uint32_t fan_first(const c2_state *s, uint32_t a)
     }
 }
 
-uint32_t c2_find_edge(const c2_state *s, uint32_t a, uint32_t b)
-{
-    if (s->vtri[a] == C2_NONE) return C2_NONE;
-    uint32_t first = fan_first(s, a), t = first;
-    do {
-        int k = c2_corner(s, t, a);
-        if (s->tri[3 * (size_t)t + (k + 1) % 3] == b) return t;
-        t = s->adj[3 * (size_t)t + (k + 1) % 3]; /* across tri[k+2] -> a */
-    } while (t != C2_NONE && t != first);
-    return C2_NONE;
-}
-
 typedef struct walk {
     uint32_t *edges; /* crossing edges as vertex pairs (right, left of a->b) */
     uint32_t *slots; /* triangles met, the corridor the flips stay in */

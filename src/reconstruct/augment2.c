@@ -109,6 +109,8 @@ static double lens_param(const c2_state *s, const csr *dt, scratch *sc, uint32_t
 {
     const double *pu = c2_pt(s, u), *pw = c2_pt(s, w);
     double min_sin = 1;
+    int e; /* products are taken in a frame scaled by 2^-e, |u - w| ~ 1: no overflow */
+    frexp(fmax(fabs(pu[0] - pw[0]), fabs(pu[1] - pw[1])), &e);
     size_t head = 0, tail = 0;
     next_stamp(sc, s->n);
     sc->stamp[u] = sc->stamp[w] = sc->now;
@@ -121,7 +123,8 @@ static double lens_param(const c2_state *s, const csr *dt, scratch *sc, uint32_t
             if (sc->stamp[p] == sc->now) continue;
             sc->stamp[p] = sc->now;
             const double *pp = c2_pt(s, p);
-            double ax = pu[0] - pp[0], ay = pu[1] - pp[1], bx = pw[0] - pp[0], by = pw[1] - pp[1];
+            double ax = ldexp(pu[0] - pp[0], -e), ay = ldexp(pu[1] - pp[1], -e);
+            double bx = ldexp(pw[0] - pp[0], -e), by = ldexp(pw[1] - pp[1], -e);
             double dot = ax * bx + ay * by;
             if (dot > 0) continue; /* outside the disc with diameter u-w: θ acute */
             sc->queue[tail++] = p;

@@ -14,6 +14,9 @@
 double c2_gamma_indicator(const double *a, const double *b, const double *c)
 {
     double ux = a[0] - c[0], uy = a[1] - c[1], vx = b[0] - c[0], vy = b[1] - c[1];
+    int e; /* an exact power-of-two rescaling keeps the products below from overflowing */
+    frexp(fmax(fmax(fabs(ux), fabs(uy)), fmax(fabs(vx), fabs(vy))), &e);
+    ux = ldexp(ux, -e), uy = ldexp(uy, -e), vx = ldexp(vx, -e), vy = ldexp(vy, -e);
     double lu = hypot(ux, uy), lv = hypot(vx, vy);
     if (!(lu > 0 && lv > 0)) return 1;
     double sin_t = fabs(ux * vy - uy * vx) / lu / lv;
@@ -33,13 +36,19 @@ static double area_change(const double *a, const double *b, const double *c)
     return sum > 0 ? (bc + ca - ab) / sum : 0;
 }
 
+/* The circumcentre, computed relative to a in a frame scaled by a power of two so that the
+ * third-degree products can neither overflow nor underflow; power-of-two scaling is exact, so
+ * the result scales exactly with the input (the skeleton key stays scale independent). */
 static void circumcentre(const double *a, const double *b, const double *c, double *out)
 {
     double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    int e;
+    frexp(fmax(fmax(fabs(bx), fabs(by)), fmax(fabs(cx), fabs(cy))), &e);
+    bx = ldexp(bx, -e), by = ldexp(by, -e), cx = ldexp(cx, -e), cy = ldexp(cy, -e);
     double d = 2 * (bx * cy - by * cx);
     double b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-    out[0] = a[0] + (cy * b2 - by * c2) / d;
-    out[1] = a[1] + (bx * c2 - cx * b2) / d;
+    out[0] = a[0] + ldexp((cy * b2 - by * c2) / d, e);
+    out[1] = a[1] + ldexp((bx * c2 - cx * b2) / d, e);
 }
 
 /* §4.3.4: the Voronoi skeleton of a triangulated polygon is the tree of its triangles' Voronoi

@@ -62,6 +62,18 @@ static inline int rt_is_input_order(const fl_reconstruction2 *rec, size_t n)
     return 1;
 }
 
+/* 1 when x and y hold the same cycle of m vertices (the same direction, any starting point). */
+static inline int rt_same_cycle(const uint32_t *x, const uint32_t *y, size_t m)
+{
+    size_t s = 0;
+    while (s < m && y[s] != x[0])
+        s++;
+    if (s == m) return m == 0;
+    for (size_t i = 0; i < m; i++)
+        if (x[i] != y[(s + i) % m]) return 0;
+    return 1;
+}
+
 /* Checks the invariants every result must satisfy: the boundary is a simple counterclockwise
  * polygon of distinct vertices (fl_polygon_check), the interior triangles are counterclockwise,
  * use only boundary vertices or points left inside, and their areas add up to the polygon's

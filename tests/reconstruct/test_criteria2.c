@@ -54,6 +54,45 @@ static void test_every_criterion_reconstructs_a_dense_star_in_order(void)
     free(xy);
 }
 
+/* §5.2: the selection rule "is orientation and scale independent". Scaling by a power of two and
+ * turning by a quarter are exact, so every criterion must give the same polygon, also on scattered
+ * points that need augmentation. */
+static void test_result_is_independent_of_scale_and_quarter_turns(void)
+{
+    size_t n = 150;
+    double *xy = malloc(2 * n * sizeof *xy), *moved = malloc(2 * n * sizeof *moved);
+    unsigned long long st = 5;
+    for (size_t i = 0; i < 2 * n; i++)
+        xy[i] = fl_test_rand01(&st) - 0.5;
+    const double scales[] = {0x1p-500, 0x1p900};
+    for (int c = 0; c < 3; c++) {
+        fl_reconstruct2_options opt = {0};
+        opt.criterion = (fl_reconstruct2_criterion)c;
+        fl_reconstruction2 ref, rec;
+        fl_error err;
+        CHECK_STATUS(fl_reconstruct2(xy, n, &opt, &ref, &err), FL_OK, &err);
+        for (int v = 0; v < 3; v++) {
+            for (size_t i = 0; i < n; i++) {
+                double x = xy[2 * i], y = xy[2 * i + 1];
+                if (v < 2)
+                    moved[2 * i] = x * scales[v], moved[2 * i + 1] = y * scales[v];
+                else
+                    moved[2 * i] = -y, moved[2 * i + 1] = x;
+            }
+            CHECK_STATUS(fl_reconstruct2(moved, n, &opt, &rec, &err), FL_OK, &err);
+            CHECK_MSG(rec.boundary_count == ref.boundary_count &&
+                          rt_same_cycle(ref.boundary, rec.boundary, ref.boundary_count),
+                      "criterion %d, variant %d", c, v);
+            CHECK(isnan(rec.augmented_c0) ? isnan(ref.augmented_c0)
+                                          : rec.augmented_c0 == ref.augmented_c0);
+            fl_reconstruction2_free(&rec);
+        }
+        fl_reconstruction2_free(&ref);
+    }
+    free(xy);
+    free(moved);
+}
+
 static void test_written_polygon_and_mesh_read_back(void)
 {
     size_t n = 64;
@@ -92,4 +131,5 @@ static void test_written_polygon_and_mesh_read_back(void)
 
 FL_TEST_MAIN(FL_TEST_CASE(test_gamma_indicator_matches_the_circumradius_definition),
              FL_TEST_CASE(test_every_criterion_reconstructs_a_dense_star_in_order),
+             FL_TEST_CASE(test_result_is_independent_of_scale_and_quarter_turns),
              FL_TEST_CASE(test_written_polygon_and_mesh_read_back))

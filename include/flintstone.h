@@ -644,6 +644,93 @@ fl_status fl_write_graph(const char *path, const double *coords, size_t n, const
 
 /* end of graphs */
 
+/* ==== reconstruct ========================================================================= */
+/* (section owned by src/reconstruct; docs/reconstruct2d.md)
+ *
+ * Boundary construction by constriction (thesis ch. 5): from scattered points alone, a simple
+ * polygon through all of them, found by peeling triangles off the Delaunay triangulation
+ * (= γ([-1,1],[0,1])) from the convex hull inward (Algorithm 5.1). A boundary edge v_i v_j may
+ * be deleted with its triangle v_i v_j v_k only while v_k is not yet on the boundary (§5.2), so
+ * the boundary stays a simple polygon; among the removable edges the one with the smallest key
+ * goes first. When no edge is removable but points remain inside ("locked", §4.3.3, or a
+ * non-Hamiltonian triangulation, §5.4), the graph is augmented with the extra edges of
+ * γ([-1,1],[c0,1]) for c0 = -1/L, -2/L, ..., -1 until every point is on the boundary. */
+
+/* Which key orders the removable boundary edges (thesis §5.2, §4.3.3, §4.3.4 / §5.6). */
+typedef enum fl_reconstruct2_criterion {
+    FL_RECONSTRUCT2_GAMMA = 0, /* γ-indicator (Def. 5.1, eq. 5.1): 1 - sin θ when the angle θ at
+                                  the opposite vertex is acute, sin θ - 1 when obtuse; smallest
+                                  first, i.e. the widest-seen vertex first */
+    FL_RECONSTRUCT2_AREA_CHANGE = 1, /* Boissonnat's minimal change, eq. 4.1 in 2D:
+                                        (|v_i v_k| + |v_k v_j| - |v_i v_j|) / perimeter */
+    FL_RECONSTRUCT2_VORONOI_SKELETON = 2 /* shortest Voronoi skeleton (O'Rourke et al.) as a
+                                            constriction: delete the triangle whose Voronoi
+                                            vertex takes the most skeleton length with it */
+} fl_reconstruct2_criterion;
+
+/* Options of fl_reconstruct2; all zero is the default (γ-indicator, no kept edges, augmentation
+ * in 10 steps of c0, no progress reports). */
+typedef struct fl_reconstruct2_options {
+    fl_reconstruct2_criterion criterion;
+    const uint32_t *keep; /* keep_count pairs of input indices: edges that must end up on the
+                             boundary (constrained constriction, §5.7); may be NULL */
+    size_t keep_count;
+    int extra_levels; /* augmentation steps: c0 = -k/L for k = 1..L with L = extra_levels;
+                         0 means 10 (c0 = -0.1, -0.2, ..., -1 as in Fig. 5.7), < 0 disables
+                         augmentation (pure Delaunay constriction) */
+    fl_progress_fn progress; /* may be NULL; stage "constriction" */
+    void *progress_user;
+} fl_reconstruct2_options;
+
+/* The constructed boundary. Indices refer to the input points; of exact duplicates only the
+ * first occurrence appears (the others share its place on the boundary). */
+typedef struct fl_reconstruction2 {
+    size_t point_count;    /* n as given */
+    size_t unique_count;   /* distinct points */
+    size_t boundary_count; /* vertices of the boundary polygon */
+    uint32_t *boundary;    /* the polygon as a counterclockwise vertex cycle (not repeated) */
+    size_t triangle_count; /* triangles inside the polygon: boundary_count - 2 plus twice the
+                              points left inside (when all_on_boundary is 0) */
+    uint32_t *tri;         /* 3 per triangle, counterclockwise; they tile the polygon */
+    size_t delaunay_count; /* the Delaunay triangulation constriction started from */
+    uint32_t *delaunay_tri;
+    int all_on_boundary;   /* 1 when every distinct point is a boundary vertex and every kept
+                              edge a boundary edge; 0 otherwise, and `reason` says why */
+    double augmented_c0;   /* the c0 of γ([-1,1],[c0,1]) that was needed, NaN when the Delaunay
+                              triangulation sufficed */
+    double area;           /* area of the polygon (positive) */
+    char reason[256];      /* empty when all_on_boundary is 1 */
+} fl_reconstruction2;
+
+/* Constructs the boundary polygon of the n points xy[2i], xy[2i+1] by constriction. The result
+ * is always a simple counterclockwise polygon together with a triangulation of its interior;
+ * when some points cannot be brought onto the boundary (constriction locked even at c0 = -1, or
+ * kept edges that make it impossible) the call still succeeds with all_on_boundary = 0, the
+ * points left inside the polygon and a reason. `opt` may be NULL. Expected O(n log n).
+ * Errors (then *out is zeroed): FL_ERR_USAGE for NULL buffers or a bad criterion;
+ * FL_ERR_INPUT for NaN/Inf coordinates, fewer than 3 distinct points, kept edges with an index
+ * out of range, joining a point to itself (or its duplicate), crossing each other or passing
+ * through a point, or three kept edges at one point; FL_ERR_ALGORITHM when all points are
+ * collinear (no polygon has positive area) or when cancelled; FL_ERR_NOMEM. */
+fl_status fl_reconstruct2(const double *xy, size_t n, const fl_reconstruct2_options *opt,
+                          fl_reconstruction2 *out, fl_error *err);
+
+/* Parses "gamma", "area-change" or "voronoi-skeleton" (the CLI's --criterion). */
+fl_status fl_reconstruct2_criterion_parse(const char *text, fl_reconstruct2_criterion *criterion,
+                                          fl_error *err);
+
+/* Writes the result by the extension of path: .xy and .geojson/.json (the boundary polygon, via
+ * fl_write_polygon), .svg (points, the Delaunay triangulation faint and the boundary bold, like
+ * thesis Figs. 5.2-5.3), .off (the interior triangles as a mesh with z = 0; all n input points
+ * are its vertices). xy must be the n points rec was built from. Atomic. */
+fl_status fl_write_reconstruction2(const char *path, const double *xy, size_t n,
+                                   const fl_reconstruction2 *rec, fl_error *err);
+
+/* Frees the arrays and zeroes rec; safe on a zeroed or already-freed struct. */
+void fl_reconstruction2_free(fl_reconstruction2 *rec);
+
+/* end of reconstruct */
+
 
 #ifdef __cplusplus
 }

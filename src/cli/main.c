@@ -13,6 +13,8 @@ static const cli_command commands[] = {
      cmd_delaunay},
     {"graph", "γ-neighbourhood graphs and the classical graphs (hull, Delaunay, Gabriel, ...)",
      cmd_graph},
+    {"reconstruct", "the boundary through every point: a simple polygon (2D) by constriction",
+     cmd_reconstruct},
     {"version", "print the version", cmd_version},
 };
 

@@ -165,13 +165,6 @@ static void sort_edges(const edge_order *o, uint32_t *idx, uint32_t *tmp, size_t
     memcpy(idx, tmp, n * sizeof *idx);
 }
 
-static uint32_t uf_find(uint32_t *r, uint32_t x)
-{
-    while (r[x] != x)
-        x = r[x] = r[r[x]];
-    return x;
-}
-
 static fl_status emst(const classic_ctx *c, const fl_graph *cand, fl_graph *out, fl_error *err)
 {
     size_t m = cand->simplex_count;
@@ -189,7 +182,7 @@ static fl_status emst(const classic_ctx *c, const fl_graph *cand, fl_graph *out,
         sort_edges(&o, idx, tmp, m);
         for (size_t i = 0; i < m && !oom; i++) {
             const uint32_t *e = cand->simplices + 2 * (size_t)idx[i];
-            uint32_t ra = uf_find(root, e[0]), rb = uf_find(root, e[1]);
+            uint32_t ra = fl_uf_find(root, e[0]), rb = fl_uf_find(root, e[1]);
             if (ra == rb) continue;
             root[ra] = rb;
             oom = graph_builder_add(&b, e, 0, 0) != 0;

@@ -43,22 +43,6 @@ typedef struct dt_ctx {
     fl_vec local; /* uint32_t: the current local point set */
 } dt_ctx;
 
-static uint32_t find_root(uint32_t *root, uint32_t x)
-{
-    while (root[x] != x) {
-        root[x] = root[root[x]];
-        x = root[x];
-    }
-    return x;
-}
-
-static void unite(uint32_t *root, uint32_t a, uint32_t b)
-{
-    a = find_root(root, a);
-    b = find_root(root, b);
-    if (a != b) root[a < b ? b : a] = a < b ? a : b;
-}
-
 static const double *pt(const dt_ctx *c, uint32_t i)
 {
     return c->coords + (size_t)i * c->dim;
@@ -91,10 +75,11 @@ static int build_clusters(dt_ctx *c)
     for (size_t t = 0; t < m; t++)
         for (size_t i = 0; i < k; i++) {
             uint32_t u = c->cv.adj[t * k + i];
-            if (u != UINT32_MAX && u > t && same_sphere(c, t, u)) unite(c->root, (uint32_t)t, u);
+            if (u != UINT32_MAX && u > t && same_sphere(c, t, u))
+                fl_uf_union(c->root, (uint32_t)t, u);
         }
     for (size_t t = 0; t < m; t++)
-        c->cluster_start[find_root(c->root, (uint32_t)t) + 1]++;
+        c->cluster_start[fl_uf_find(c->root, (uint32_t)t) + 1]++;
     for (size_t t = 0; t < m; t++)
         c->cluster_start[t + 1] += c->cluster_start[t];
     size_t *fill = fl_alloc_array(m + 1, sizeof *fill);
@@ -272,7 +257,7 @@ static int group_coplanar_faces(dt_ctx *c, const uint32_t *face, size_t nf, uint
         for (int k = 0; k < 3; k++)
             if (w[k] != e[i].a && w[k] != e[i].b) other = w[k];
         if (gamma_side3(pt(c, v[0]), pt(c, v[1]), pt(c, v[2]), pt(c, other)) == 0)
-            unite(root, e[i].face, e[i + 1].face);
+            fl_uf_union(root, e[i].face, e[i + 1].face);
     }
     free(e);
     return 0;
@@ -314,9 +299,9 @@ static int hull_groups(dt_ctx *c)
     uint32_t *root = rc ? NULL : fl_alloc_array(faces.count, sizeof *root);
     rc = rc || !root || group_coplanar_faces(c, faces.data, faces.count, root);
     for (size_t f = 0; f < faces.count && !rc; f++) {
-        if (find_root(root, (uint32_t)f) != f) continue;
+        if (fl_uf_find(root, (uint32_t)f) != f) continue;
         for (size_t h = 0; h < faces.count; h++)
-            root[h] = find_root(root, (uint32_t)h);
+            root[h] = fl_uf_find(root, (uint32_t)h);
         rc = hull_group(c, faces.data, root, faces.count, (uint32_t)f, &verts);
     }
     free(root);

@@ -335,6 +335,63 @@ static void test_constrict3_duplicates_are_merged(void)
     free(p);
 }
 
+/* `extra` goes on removing by the same rule after every point is on the boundary (thesis
+ * Fig. 5.5): never more than asked, the volume only shrinks, the boundary stays a sphere. */
+static void test_constrict3_extra_removals_keep_a_sphere(void)
+{
+    fl_points pts;
+    fl_error err;
+    CHECK_STATUS(fl_read_points(FL_SOURCE_DIR "/data/demo/peanut.xyz", &pts, &err), FL_OK, &err);
+    if (!pts.coords) return;
+    fl_reconstruct3_options opt = {0};
+    fl_reconstruction3 base, more;
+    CHECK_STATUS(fl_reconstruct3(pts.coords, pts.count, &opt, &base, &err), FL_OK, &err);
+    opt.extra = 50;
+    CHECK_STATUS(fl_reconstruct3(pts.coords, pts.count, &opt, &more, &err), FL_OK, &err);
+    if (base.tri && more.tri) {
+        CHECK_EQ_INT(base.extra_removed, 0);
+        CHECK(more.extra_removed <= 50 && more.extra_removed > 0);
+        CHECK_EQ_INT(more.removed_count, base.removed_count + more.extra_removed);
+        CHECK(more.volume < base.volume);
+        CHECK(more.all_on_boundary);
+        check_reconstruction(pts.coords, pts.count, &more);
+    }
+    fl_reconstruction3_free(&base);
+    fl_reconstruction3_free(&more);
+    fl_points_free(&pts);
+}
+
+/* Points filling a flattened ball (not sampled on a surface): constriction of the Delaunay
+ * tetrahedralization can lock (thesis §4.3.3). Whatever happens, the result must be a valid
+ * sphere, and points left inside must be listed with a reason. */
+static void test_constrict3_volume_samples_lock_with_a_reason(void)
+{
+    size_t n = 512;
+    double *p = malloc(3 * n * sizeof *p);
+    unsigned long long seed = 11;
+    for (size_t i = 0; i < n; i++) {
+        double x, y, z;
+        do {
+            x = 2 * fl_test_rand01(&seed) - 1;
+            y = 2 * fl_test_rand01(&seed) - 1;
+            z = 2 * fl_test_rand01(&seed) - 1;
+        } while (x * x + y * y + z * z > 1);
+        p[3 * i] = x;
+        p[3 * i + 1] = y;
+        p[3 * i + 2] = 0.2 * z;
+    }
+    fl_reconstruction3 r;
+    fl_error err;
+    CHECK_STATUS(fl_reconstruct3(p, n, NULL, &r, &err), FL_OK, &err);
+    if (r.tri) {
+        check_reconstruction(p, n, &r);
+        if (r.points_inside) CHECK(strstr(r.reason, "locked") != NULL);
+        printf("flattened ball: %zu points, %zu left inside\n", n, r.points_inside);
+    }
+    fl_reconstruction3_free(&r);
+    free(p);
+}
+
 static void test_constrict3_bad_input_is_an_error(void)
 {
     double flat[3 * 10];
@@ -367,4 +424,6 @@ FL_TEST_MAIN(FL_TEST_CASE(test_constrict3_tetrahedron_is_its_four_faces),
              FL_TEST_CASE(test_constrict3_cube_surface_samples),
              FL_TEST_CASE(test_constrict3_grid_points_result_is_valid),
              FL_TEST_CASE(test_constrict3_duplicates_are_merged),
+             FL_TEST_CASE(test_constrict3_extra_removals_keep_a_sphere),
+             FL_TEST_CASE(test_constrict3_volume_samples_lock_with_a_reason),
              FL_TEST_CASE(test_constrict3_bad_input_is_an_error))

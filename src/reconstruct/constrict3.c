@@ -159,7 +159,7 @@ static void debug_check(const constrict3_state *s, size_t n, size_t step)
         assert(constrict3_boundary_is_sphere(s, n));
 }
 #else
-#define debug_check(s, n, step) ((void)0)
+#define debug_check(s, n, step) ((void)(s), (void)(n), (void)(step))
 #endif
 
 /* Algorithm 5.1, lines 3-8, followed by `extra` removals. Returns FL_OK, or FL_ERR_NOMEM /

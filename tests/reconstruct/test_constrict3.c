@@ -392,6 +392,35 @@ static void test_constrict3_volume_samples_lock_with_a_reason(void)
     free(p);
 }
 
+static int cancel_in_constriction(void *user, const char *stage, double fraction)
+{
+    (void)fraction;
+    *(int *)user += 1;
+    return strcmp(stage, "constriction 3d") == 0;
+}
+
+/* The progress callback reaches the constriction loop, and a nonzero answer stops it. */
+static void test_constrict3_progress_can_cancel(void)
+{
+    size_t n = 6000;
+    double *p = sphere_points(n, 1, 1, 1, 31);
+    unsigned long long seed = 5;
+    for (size_t i = 0; i < n; i += 3) /* a third inside: thousands of removals */
+        for (int k = 0; k < 3; k++)
+            p[3 * i + k] *= 0.3 + 0.6 * fl_test_rand01(&seed);
+    int calls = 0;
+    fl_reconstruct3_options opt = {0};
+    opt.progress = cancel_in_constriction;
+    opt.progress_user = &calls;
+    fl_reconstruction3 r;
+    fl_error err;
+    CHECK_STATUS(fl_reconstruct3(p, n, &opt, &r, &err), FL_ERR_ALGORITHM, &err);
+    CHECK(strstr(err.message, "cancelled") != NULL);
+    CHECK(calls > 0);
+    CHECK(r.tri == NULL && r.tet == NULL && r.triangle_count == 0);
+    free(p);
+}
+
 static void test_constrict3_bad_input_is_an_error(void)
 {
     double flat[3 * 10];
@@ -426,4 +455,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_constrict3_tetrahedron_is_its_four_faces),
              FL_TEST_CASE(test_constrict3_duplicates_are_merged),
              FL_TEST_CASE(test_constrict3_extra_removals_keep_a_sphere),
              FL_TEST_CASE(test_constrict3_volume_samples_lock_with_a_reason),
+             FL_TEST_CASE(test_constrict3_progress_can_cancel),
              FL_TEST_CASE(test_constrict3_bad_input_is_an_error))

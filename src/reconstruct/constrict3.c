@@ -112,7 +112,12 @@ static void count_face(constrict3_state *s, uint32_t t, int k, int delta)
     for (int i = 0; i < 3; i++) {
         uint32_t v = s->tet[4 * (size_t)t + constrict3_face[k][i]];
         if (delta > 0 && s->bfaces[v]++ == 0) s->on_boundary++;
-        if (delta < 0) s->bfaces[v]--; /* never reaches 0: see the file comment */
+        if (delta < 0) {
+            /* a boundary vertex has >= 3 boundary faces and a removal takes at most two of
+             * them before adding new ones, so this never reaches 0 (see the file comment) */
+            assert(s->bfaces[v] > 1);
+            s->bfaces[v]--;
+        }
     }
 }
 
@@ -195,6 +200,7 @@ static fl_status constrict(constrict3_state *s, size_t unique, size_t n,
             goto done;
         }
     }
+    assert(constrict3_boundary_is_sphere(s, n));
 done:
     constrict3_heap_free(&h);
     return st;

@@ -131,11 +131,9 @@ static double check_reconstruction(const double *xyz, size_t n, const fl_reconst
 /* Volume of the convex hull, as the volume of the whole Delaunay tetrahedralization. */
 static double hull_volume(const double *xyz, size_t n)
 {
-    fl_reconstruct3_options opt = {0};
     fl_dt3 dt;
     fl_error err;
     double v = 0;
-    (void)opt;
     if (fl_dt3_build(xyz, n, NULL, &dt, &err) != FL_OK) return NAN;
     fl_mesh mesh = {n, (double *)(uintptr_t)xyz, dt.hull_face_count, dt.hull_faces};
     fl_mesh_check_options mopt = {1, NULL, NULL};

@@ -280,6 +280,50 @@ static void test_constrict3_peanut_from_demo_data(void)
     fl_points_free(&pts);
 }
 
+/* Uniform samples of the surface of two overlapping unit spheres (centres ±0.7 on x): the
+ * boundary must follow the analytic surface — no triangle cuts deep into the object (a wrong
+ * sign of the γ-indicator digs to depth ~0.4 here) — and enclose about the exact volume of the
+ * union, 2 (4π/3) - π (4r + d)(2r - d)² / 12 with r = 1, d = 1.4. */
+static void test_constrict3_two_spheres_follow_the_surface(void)
+{
+    size_t n = 2000, k = 0;
+    const double c = 0.7;
+    double *p = malloc(3 * n * sizeof *p);
+    unsigned long long seed = 77;
+    while (k < n) {
+        double z = 2 * fl_test_rand01(&seed) - 1, phi = 2 * PI * fl_test_rand01(&seed);
+        double s = sqrt(1 - z * z), cx = k % 2 ? c : -c;
+        double x = s * cos(phi) + cx, y = s * sin(phi);
+        if ((x + cx) * (x + cx) + y * y + z * z < 1) continue; /* inside the other sphere */
+        p[3 * k] = x;
+        p[3 * k + 1] = y;
+        p[3 * k + 2] = z;
+        k++;
+    }
+    fl_reconstruction3 r;
+    fl_error err;
+    CHECK_STATUS(fl_reconstruct3(p, n, NULL, &r, &err), FL_OK, &err);
+    if (r.tri) {
+        check_reconstruction(p, n, &r);
+        CHECK(r.all_on_boundary);
+        double max_depth = 0;
+        for (size_t i = 0; i < r.triangle_count; i++) {
+            double g[3] = {0, 0, 0};
+            for (int v = 0; v < 3; v++)
+                for (int a = 0; a < 3; a++)
+                    g[a] += p[3 * r.tri[3 * i + v] + a] / 3;
+            double d1 = 1 - sqrt((g[0] - c) * (g[0] - c) + g[1] * g[1] + g[2] * g[2]);
+            double d2 = 1 - sqrt((g[0] + c) * (g[0] + c) + g[1] * g[1] + g[2] * g[2]);
+            max_depth = fmax(max_depth, fmax(d1, d2));
+        }
+        CHECK_MSG(max_depth < 0.05, "a boundary triangle is %.3f deep inside", max_depth);
+        double exact = 8 * PI / 3 - PI * (4 + 2 * c) * (2 - 2 * c) * (2 - 2 * c) / 12;
+        CHECK_NEAR(r.volume / exact, 1.0, 0.03);
+    }
+    fl_reconstruction3_free(&r);
+    free(p);
+}
+
 static void test_constrict3_cube_surface_samples(void)
 {
     size_t per = 60, n = 6 * per;
@@ -448,6 +492,7 @@ FL_TEST_MAIN(FL_TEST_CASE(test_constrict3_tetrahedron_is_its_four_faces),
              FL_TEST_CASE(test_constrict3_sphere_with_inner_points_reaches_all),
              FL_TEST_CASE(test_constrict3_ellipsoid),
              FL_TEST_CASE(test_constrict3_peanut_from_demo_data),
+             FL_TEST_CASE(test_constrict3_two_spheres_follow_the_surface),
              FL_TEST_CASE(test_constrict3_cube_surface_samples),
              FL_TEST_CASE(test_constrict3_grid_points_result_is_valid),
              FL_TEST_CASE(test_constrict3_duplicates_are_merged),

@@ -87,15 +87,19 @@ static double removal_key(const constrict3_state *s, uint32_t t, fl_reconstruct3
     } else {
         return NAN;
     }
-    if (crit == FL_RECONSTRUCT3_AREA_CHANGE) return constrict3_area_change(s->p, c, m);
-    double key = 0; /* thesis §5.3 selection rule: the sum over the boundary faces */
-    for (int k = 0; k < 4; k++)
-        if (m & (1u << k))
-            key += constrict3_gamma_indicator(s->p + 3 * (size_t)c[constrict3_face[k][0]],
-                                              s->p + 3 * (size_t)c[constrict3_face[k][1]],
-                                              s->p + 3 * (size_t)c[constrict3_face[k][2]],
-                                              s->p + 3 * (size_t)c[k]);
-    return key;
+    double key = 0;
+    if (crit == FL_RECONSTRUCT3_AREA_CHANGE)
+        key = constrict3_area_change(s->p, c, m);
+    else /* thesis §5.3 selection rule: the sum over the boundary faces */
+        for (int k = 0; k < 4; k++)
+            if (m & (1u << k))
+                key += constrict3_gamma_indicator(s->p + 3 * (size_t)c[constrict3_face[k][0]],
+                                                  s->p + 3 * (size_t)c[constrict3_face[k][1]],
+                                                  s->p + 3 * (size_t)c[constrict3_face[k][2]],
+                                                  s->p + 3 * (size_t)c[k]);
+    /* coordinates near the double range can overflow the construction; such a tetrahedron is
+     * still removable, just last (every real key is in [-2, 2]) */
+    return isnan(key) ? 4.0 : key;
 }
 
 static int push_if_removable(const constrict3_state *s, constrict3_heap *h, uint32_t t,
@@ -211,7 +215,6 @@ static fl_status validate(const double *xyz, size_t n, const fl_reconstruct3_opt
 {
     if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_reconstruct3: out is NULL");
     memset(out, 0, sizeof *out);
-    out->augmented_c0 = NAN;
     if (!xyz && n > 0) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_reconstruct3: xyz is NULL");
     if (opt->criterion != FL_RECONSTRUCT3_GAMMA && opt->criterion != FL_RECONSTRUCT3_AREA_CHANGE)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
@@ -256,6 +259,7 @@ fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_opt
     out->delaunay_tet_count = dt.tet_count;
     out->removed_count = dt.tet_count - s.region_count;
     out->extra_removed = extra_removed;
+    out->augmented_c0 = NAN; /* γ([-1,1],[c0,1]) augmentation (§5.4) is not implemented */
     if (constrict3_extract(&s, dt.duplicate_of, n, out) != 0) {
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory in 3D constriction");
         goto done;
@@ -277,5 +281,4 @@ void fl_reconstruction3_free(fl_reconstruction3 *rec)
     free(rec->tet);
     free(rec->inside);
     memset(rec, 0, sizeof *rec);
-    rec->augmented_c0 = NAN;
 }

@@ -463,6 +463,32 @@ static void test_constrict3_progress_can_cancel(void)
     free(p);
 }
 
+/* Coordinates near the top of the double range overflow every floating construction; the
+ * combinatorial decisions still hold, so the result must still be a valid sphere. */
+static void test_constrict3_huge_coordinates_still_give_a_sphere(void)
+{
+    size_t ns = 60, n = ns + 4;
+    double *p = sphere_points(n, 1, 1, 1, 41);
+    for (size_t i = ns; i < n; i++)
+        for (int k = 0; k < 3; k++)
+            p[3 * i + k] *= 0.5;
+    for (size_t i = 0; i < 3 * n; i++)
+        p[i] *= 1e300;
+    fl_reconstruction3 r;
+    fl_error err;
+    CHECK_STATUS(fl_reconstruct3(p, n, NULL, &r, &err), FL_OK, &err);
+    fl_mesh mesh = {n, p, r.triangle_count, r.tri};
+    fl_mesh_check_options mopt = {1, NULL, NULL};
+    fl_mesh_report rep;
+    CHECK_STATUS(fl_mesh_check(&mesh, &mopt, &rep, &err), FL_OK, &err);
+    CHECK(rep.closed && rep.manifold && rep.oriented);
+    CHECK_EQ_INT(rep.genus, 0);
+    CHECK_EQ_INT(r.boundary_vertex_count + r.points_inside, n);
+    fl_mesh_report_free(&rep);
+    fl_reconstruction3_free(&r);
+    free(p);
+}
+
 static void test_constrict3_bad_input_is_an_error(void)
 {
     double flat[3 * 10];
@@ -499,4 +525,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_constrict3_tetrahedron_is_its_four_faces),
              FL_TEST_CASE(test_constrict3_extra_removals_keep_a_sphere),
              FL_TEST_CASE(test_constrict3_volume_samples_lock_with_a_reason),
              FL_TEST_CASE(test_constrict3_progress_can_cancel),
+             FL_TEST_CASE(test_constrict3_huge_coordinates_still_give_a_sphere),
              FL_TEST_CASE(test_constrict3_bad_input_is_an_error))

@@ -732,6 +732,84 @@ void fl_reconstruction2_free(fl_reconstruction2 *rec);
 /* end of reconstruct */
 
 
+/* ==== reconstruct ========================================================================= */
+/* (section owned by src/reconstruct; docs/reconstruct2d.md, docs/reconstruct3d.md) */
+
+/* ---- 3D constriction ----
+ * Boundary construction in 3D by constriction (thesis §5.3, Algorithm 5.1): the Delaunay
+ * tetrahedralization (= γ([-1,1],[0,1])) is peeled from the convex hull inward, one boundary
+ * tetrahedron at a time, so that the boundary stays a closed, oriented 2-manifold of genus 0:
+ * a tetrahedron with one boundary triangle goes only while its opposite vertex is not on the
+ * boundary, one with two boundary triangles only while its opposite edge is not on the
+ * boundary, one with three never. Among the removable tetrahedra the one with the smallest key
+ * goes first. Constriction stops when every distinct point is on the boundary (then `extra`
+ * more removals), or when nothing is removable ("locked", thesis §4.3.3 / §5.4). */
+
+/* Which key orders the removable boundary tetrahedra. */
+typedef enum fl_reconstruct3_criterion {
+    FL_RECONSTRUCT3_GAMMA = 0,      /* γ-indicator (Def. 5.2, eq. 5.2) of the boundary triangle
+                                       w.r.t. the opposite vertex: s (1 - r/R) with r the radius
+                                       of the triangle's circumcircle, R of the tetrahedron's
+                                       circumsphere, s = +1 when the sphere's centre lies on the
+                                       opposite vertex's side of the triangle, else -1; summed
+                                       over both triangles of two-triangle tetrahedra (§5.3
+                                       selection rule); smallest first */
+    FL_RECONSTRUCT3_AREA_CHANGE = 1 /* Boissonnat's minimal change, eq. 4.1: (area of the
+                                       inner faces - area of the boundary faces) / total area */
+} fl_reconstruct3_criterion;
+
+/* Options of fl_reconstruct3; all zero is the default (γ-indicator, stop as soon as every point
+ * is on the boundary, no progress reports). */
+typedef struct fl_reconstruct3_options {
+    fl_reconstruct3_criterion criterion;
+    size_t extra; /* removable tetrahedra to remove after every point is on the boundary, by the
+                     same rule (the candlestick of thesis Fig. 5.5); 0 stops at once */
+    fl_progress_fn progress; /* may be NULL; stage "constriction 3d" (and "delaunay 3d") */
+    void *progress_user;
+} fl_reconstruct3_options;
+
+/* The constructed boundary and its interior. Indices refer to the input points; of exact
+ * duplicates only the first occurrence appears (fl_dt3.duplicate_of). */
+typedef struct fl_reconstruction3 {
+    size_t point_count;    /* n as given */
+    size_t unique_count;   /* distinct points */
+    size_t triangle_count; /* boundary triangles */
+    uint32_t *tri;         /* 3 per triangle, counterclockwise seen from outside; together a
+                              closed, oriented 2-manifold of genus 0 */
+    size_t tet_count;      /* interior tetrahedra (Delaunay tetrahedra not removed) */
+    uint32_t *tet;         /* 4 per tetrahedron, positively oriented as in fl_dt3; their faces
+                              not shared by two of them are exactly the boundary triangles */
+    size_t delaunay_tet_count; /* tetrahedra of the Delaunay tetrahedralization */
+    size_t removed_count;      /* tetrahedra removed by constriction (extra ones included) */
+    size_t extra_removed;      /* of those, removed after every point was on the boundary */
+    size_t boundary_vertex_count; /* distinct points on the boundary */
+    size_t points_inside;         /* distinct points strictly inside the boundary */
+    uint32_t *inside;             /* their indices (points_inside entries, ascending) */
+    int all_on_boundary;          /* 1 iff points_inside == 0 */
+    double volume;                /* sum of the interior tetrahedra's volumes (positive) */
+    double augmented_c0; /* c0 of γ([-1,1],[c0,1]) needed (§5.4); NaN: Delaunay sufficed or
+                            augmentation was not tried (see reason) */
+    char reason[256];    /* empty when all_on_boundary is 1, else why points remain inside */
+} fl_reconstruction3;
+
+/* Constructs the boundary polyhedron of the n points xyz[3i..3i+2] by constriction of their
+ * Delaunay tetrahedralization. On success the result is always a closed, oriented genus-0
+ * boundary with a tetrahedralization of its interior; when constriction locks before every
+ * point is on the boundary the call still succeeds with all_on_boundary = 0, the points left
+ * inside and a reason. `opt` may be NULL. Expected O(n log n) after the Delaunay
+ * tetrahedralization. Errors (then *out is zeroed): FL_ERR_USAGE for NULL buffers or a bad
+ * criterion; FL_ERR_INPUT for NaN/Inf coordinates or fewer than 4 distinct points;
+ * FL_ERR_ALGORITHM when all points are coplanar or collinear, or when cancelled;
+ * FL_ERR_NOMEM. */
+fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_options *opt,
+                          fl_reconstruction3 *out, fl_error *err);
+
+/* Frees the arrays and zeroes rec; safe on a zeroed or already-freed struct. */
+void fl_reconstruction3_free(fl_reconstruction3 *rec);
+
+/* end of reconstruct */
+
+
 #ifdef __cplusplus
 }
 #endif

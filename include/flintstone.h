@@ -729,12 +729,6 @@ fl_status fl_write_reconstruction2(const char *path, const double *xy, size_t n,
 /* Frees the arrays and zeroes rec; safe on a zeroed or already-freed struct. */
 void fl_reconstruction2_free(fl_reconstruction2 *rec);
 
-/* end of reconstruct */
-
-
-/* ==== reconstruct ========================================================================= */
-/* (section owned by src/reconstruct; docs/reconstruct2d.md, docs/reconstruct3d.md) */
-
 /* ---- 3D constriction ----
  * Boundary construction in 3D by constriction (thesis §5.3, Algorithm 5.1): the Delaunay
  * tetrahedralization (= γ([-1,1],[0,1])) is peeled from the convex hull inward, one boundary

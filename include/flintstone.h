@@ -642,9 +642,9 @@ enum {
     FL_HAL2_TWO_DISCS = 0,      /* disc[0] ∩ disc[1]; vertices on both sides of v_p v_s */
     FL_HAL2_DISC_HALFPLANE = 1, /* disc[0] ∩ the closed half-plane of v_p v_s on side `side` */
     FL_HAL2_SEGMENT = 2,        /* every vertex lies on the segment v_p v_s (a collinear run) */
-    FL_HAL2_DISC = 3 /* disc[0] alone: the polyline fits in no disc through v_p and v_s (only
-                        possible below a rounded smallest enclosing disc; never for exact input
-                        in general position) */
+    FL_HAL2_DISC = 3 /* disc[0] alone: a guard for a polyline in no disc through v_p and v_s,
+                        which HAL Thm. 1 excludes; reachable only when the smallest enclosing
+                        disc was decided in floating point (coordinates beyond 2^500) */
 };
 
 /* One node: the flintstone of the polyline v_p v_(p+1) .. v_s along its ring (indices wrap

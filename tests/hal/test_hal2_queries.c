@@ -29,7 +29,12 @@ static double *tricky_queries(const fl_polygon *p, size_t *count)
     CHECK_STATUS(fl_hal2_build(p, NULL, &h, &err), FL_OK, &err);
     size_t cap = 8 * p->vertex_count + 12 * h.node_count + 8, n = 0;
     double *q = malloc(2 * cap * sizeof(double));
-#define ADD(x, y) (q[2 * n] = (x), q[2 * n + 1] = (y), n++)
+/* (derived points that overflow are skipped: queries must be finite) */
+#define ADD(x, y)                                                                                  \
+    do {                                                                                           \
+        double x_ = (x), y_ = (y);                                                                 \
+        if (isfinite(x_) && isfinite(y_)) q[2 * n] = x_, q[2 * n + 1] = y_, n++;                   \
+    } while (0)
     for (size_t v = 0; v < p->vertex_count; v++) {
         const double *a = p->xy + 2 * v, *b = p->xy + 2 * ring_next(p, v);
         ADD(a[0], a[1]);
@@ -115,6 +120,25 @@ static void test_hal2_inclusion_matches_brute_force_on_comb_and_collinear_grid(v
     check_queries(&t.pg, q, m);
     free(q);
     fl_polygon_free(&t.pg);
+}
+
+/* Huge (products overflow) and tiny (products underflow) coordinates: the floating discs lose
+ * their meaning but only prune less; the exact answers must not change. */
+static void test_hal2_inclusion_is_exact_for_extreme_scales(void)
+{
+    const double scales[] = {1e200, 1e-300, 1e150};
+    for (size_t k = 0; k < 3; k++) {
+        unsigned long long rng = 5 + k;
+        double xy[2 * 120];
+        test_poly t;
+        tp_init(&t);
+        star_ring(xy, 120, 0, 0, 10, &rng);
+        for (size_t i = 0; i < 240; i++)
+            xy[i] *= scales[k];
+        tp_add_ring(&t, xy, 120, 0);
+        check_random_and_tricky(&t.pg, k, 500, -16 * scales[k], 16 * scales[k]);
+        fl_polygon_free(&t.pg);
+    }
 }
 
 static void test_hal2_inclusion_rejects_non_finite_queries(void)
@@ -205,6 +229,7 @@ static void test_hal2_intersection_counts_touching_and_overlapping_edges(void)
 
 FL_TEST_MAIN(FL_TEST_CASE(test_hal2_inclusion_matches_brute_force_on_random_stars_with_holes),
              FL_TEST_CASE(test_hal2_inclusion_matches_brute_force_on_comb_and_collinear_grid),
+             FL_TEST_CASE(test_hal2_inclusion_is_exact_for_extreme_scales),
              FL_TEST_CASE(test_hal2_inclusion_rejects_non_finite_queries),
              FL_TEST_CASE(test_hal2_intersection_matches_all_pairs_on_random_stars),
              FL_TEST_CASE(test_hal2_intersection_counts_touching_and_overlapping_edges))

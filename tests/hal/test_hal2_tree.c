@@ -267,6 +267,41 @@ static void test_hal2_comb_and_collinear_runs_are_certified(void)
     fl_polygon_free(&t.pg);
 }
 
+/* Twenty integer points exactly on the circle of radius 25: the smallest enclosing disc is
+ * that circle and the root pair must be a diameter (length 50), "the two vertices that are
+ * farthest apart" (§7.2.2). Repeated vertices (zero-length edges) are accepted. */
+static void test_hal2_cocircular_root_is_a_diameter(void)
+{
+    static const int pts[][2] = {{25, 0},  {24, 7},   {20, 15},   {15, 20},   {7, 24},
+                                 {0, 25},  {-7, 24},  {-15, 20},  {-20, 15},  {-24, 7},
+                                 {-25, 0}, {-24, -7}, {-20, -15}, {-15, -20}, {-7, -24},
+                                 {0, -25}, {7, -24},  {15, -20},  {20, -15},  {24, -7}};
+    double xy[2 * 24];
+    size_t n = 0;
+    for (size_t k = 0; k < 20; k++) {
+        xy[2 * n] = pts[k][0], xy[2 * n + 1] = pts[k][1], n++;
+        if (k % 7 == 3) xy[2 * n] = pts[k][0], xy[2 * n + 1] = pts[k][1], n++; /* repeat */
+    }
+    for (size_t rot = 0; rot < n; rot += 5) {
+        double ring[2 * 24];
+        for (size_t k = 0; k < n; k++) {
+            ring[2 * k] = xy[2 * ((k + rot) % n)];
+            ring[2 * k + 1] = xy[2 * ((k + rot) % n) + 1];
+        }
+        test_poly t;
+        tp_init(&t);
+        tp_add_ring(&t, ring, n, 0);
+        fl_hal2 h;
+        build_or_fail(&t.pg, &h);
+        const double *a = ring + 2 * h.rings[0].root[0], *b = ring + 2 * h.rings[0].root[1];
+        CHECK(hypot(a[0] - b[0], a[1] - b[1]) == 50);
+        CHECK_NEAR(h.rings[0].disc[2], 625, 1e-9);
+        CHECK_EQ_INT(h.node_count, n - 2);
+        fl_hal2_free(&h);
+        fl_polygon_free(&t.pg);
+    }
+}
+
 static void test_hal2_bad_input_is_rejected(void)
 {
     fl_error err;
@@ -296,4 +331,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_hal2_tree_infix_order_is_the_ring),
              FL_TEST_CASE(test_hal2_level_approximations_are_certified_and_end_at_original),
              FL_TEST_CASE(test_hal2_adaptive_approximation_meets_the_bound),
              FL_TEST_CASE(test_hal2_comb_and_collinear_runs_are_certified),
+             FL_TEST_CASE(test_hal2_cocircular_root_is_a_diameter),
              FL_TEST_CASE(test_hal2_bad_input_is_rejected))

@@ -652,6 +652,8 @@ enum {
  * into fl_hal2.polygon.xy. */
 typedef struct fl_hal2_node {
     uint32_t p, q, s;
+    uint32_t r;        /* the extreme vertex on the other side of v_p v_s (Def. 7.3); = q when
+                          that side is empty (and for FL_HAL2_SEGMENT, FL_HAL2_DISC) */
     uint32_t edges;    /* edges of v_p..v_s along the ring, >= 2 */
     int32_t child[2];  /* nodes of v_p..v_q and v_q..v_s; -1 when that part is a single edge */
     uint32_t level;    /* approximation level at which v_q appears (the root's polylines: 1) */
@@ -666,11 +668,11 @@ typedef struct fl_hal2_node {
 /* One ring's tree. The ring is vertices first .. first+count-1 of the polygon. */
 typedef struct fl_hal2_ring {
     uint32_t first, count;
-    uint32_t root[2];  /* v_i, v_j: level 0 */
-    int32_t child[2];  /* nodes of v_i..v_j and v_j..v_i; -1 when that part is a single edge */
-    double disc[3];    /* smallest enclosing disc (cx, cy, r^2), enlarged to contain the ring */
-    uint32_t depth;    /* deepest level of the tree: approximations at levels >= depth are the
-                          ring itself */
+    uint32_t root[2]; /* v_i, v_j: level 0 */
+    int32_t child[2]; /* nodes of v_i..v_j and v_j..v_i; -1 when that part is a single edge */
+    double disc[3];   /* smallest enclosing disc (cx, cy, r^2), enlarged to contain the ring */
+    uint32_t depth;   /* deepest level of the tree: approximations at levels >= depth are the
+                         ring itself */
 } fl_hal2_ring;
 
 /* A flintstone forest: a copy of the polygon, one tree per ring, the nodes of all trees. */
@@ -715,6 +717,16 @@ fl_status fl_hal2_approximate_level(const fl_hal2 *hal, uint32_t level, fl_polyg
 fl_status fl_hal2_approximate_error(const fl_hal2 *hal, double max_error, fl_polygon *out,
                                     double *error, uint32_t *level, fl_error *err);
 
+/* Dynamic insertion (thesis §7.5): inserts the point xy[0], xy[1] into the ring of vertex
+ * `after`, between `after` and the next vertex of that ring. The new vertex gets index after + 1
+ * and every later vertex index shifts by one (in hal->polygon and in the trees). The tree is
+ * repaired, not rebuilt: flintstones on the path that still hold the new vertex are kept (their
+ * discs grown), the subtree under the first one that does not is rebuilt, and the whole ring's
+ * tree when its smallest enclosing disc changes its farthest pair. Node indices change. Cost
+ * O(N) for the renumbering plus the rebuilt subtree. Errors: FL_ERR_USAGE for NULL or a vertex
+ * index out of range, FL_ERR_INPUT for a NaN/Inf point, FL_ERR_NOMEM (hal then unchanged). */
+fl_status fl_hal2_insert(fl_hal2 *hal, uint32_t after, const double *xy, fl_error *err);
+
 /* Where a query point is relative to the polygon, by the even-odd rule over all rings. */
 enum { FL_HAL2_OUTSIDE = 0, FL_HAL2_INSIDE = 1, FL_HAL2_BOUNDARY = 2 };
 
@@ -741,8 +753,8 @@ void fl_hal2_pairs_free(fl_hal2_pairs *pairs);
  * exactly), sorted by (edge of a, edge of b). With first_only != 0 the search stops at the first
  * pair found (count is then 0 or 1). *out must be freed with fl_hal2_pairs_free. Errors:
  * FL_ERR_USAGE for NULL arguments, FL_ERR_NOMEM. */
-fl_status fl_hal2_intersect(const fl_hal2 *a, const fl_hal2 *b, int first_only,
-                            fl_hal2_pairs *out, fl_error *err);
+fl_status fl_hal2_intersect(const fl_hal2 *a, const fl_hal2 *b, int first_only, fl_hal2_pairs *out,
+                            fl_error *err);
 
 /* end of hal */
 

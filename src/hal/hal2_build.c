@@ -86,7 +86,7 @@ static void make_fallback(const ring_ctx *r, uint32_t p, uint32_t s, fl_hal2_nod
         if (d > worst) worst = d, q = k;
     }
     nd->kind = FL_HAL2_DISC;
-    nd->q = q;
+    nd->q = nd->r = q;
     nd->disc[0][0] = a[0] + (b[0] - a[0]) / 2;
     nd->disc[0][1] = a[1] + (b[1] - a[1]) / 2;
     fit_disc(r, p, s, nd->disc[0]);
@@ -136,7 +136,7 @@ static void make_flintstone(const ring_ctx *r, uint32_t p, uint32_t s, fl_hal2_n
     double len = hypot(b[0] - a[0], b[1] - a[1]);
     if (ql == UINT32_MAX && qr == UINT32_MAX) { /* a collinear run on the segment */
         nd->kind = FL_HAL2_SEGMENT;
-        nd->q = p + (s - p) / 2;
+        nd->q = nd->r = p + (s - p) / 2;
         nd->disc[0][0] = a[0] + (b[0] - a[0]) / 2;
         nd->disc[0][1] = a[1] + (b[1] - a[1]) / 2;
         fit_disc(r, p, s, nd->disc[0]);
@@ -149,6 +149,7 @@ static void make_flintstone(const ring_ctx *r, uint32_t p, uint32_t s, fl_hal2_n
     double wr = qr != UINT32_MAX ? disc_width(a, b, vtx(r, qr), cr) : -1;
     int left_first = wl >= wr; /* split at the disc of larger signed radius (Alg. 7.1) */
     nd->q = left_first ? ql : qr;
+    nd->r = both ? (left_first ? qr : ql) : nd->q;
     nd->width[0] = left_first ? wl : wr;
     nd->disc[0][0] = left_first ? cl[0] : cr[0];
     nd->disc[0][1] = left_first ? cl[1] : cr[1];
@@ -168,21 +169,40 @@ static void make_flintstone(const ring_ctx *r, uint32_t p, uint32_t s, fl_hal2_n
     nd->error = w + WIDTH_MARGIN * (w + len);
 }
 
-typedef struct pending {
-    uint32_t p, s, level;
-    int32_t *slot; /* where the new node's index goes */
-} pending;
+/* Grows subtrees depth first from the pending polylines stack[0..top-1] (Algorithm 7.1, depth
+ * first instead of level by level: the nodes are the same). The stack needs room for one entry
+ * a vertex of the ring; hal->nodes for one node a vertex. */
+static void grow(fl_hal2 *hal, fl_hal2_ring *rg, hal2_pending *stack, size_t top)
+{
+    ring_ctx r = {hal->polygon.xy, rg->first, rg->count};
+    while (top > 0) {
+        hal2_pending w = stack[--top];
+        size_t id = hal->node_count++;
+        fl_hal2_node *nd = &hal->nodes[id];
+        memset(nd, 0, sizeof *nd);
+        make_flintstone(&r, w.p, w.s, nd);
+        *w.slot = (int32_t)id;
+        uint32_t q = nd->q;
+        nd->p = gidx(&r, w.p);
+        nd->s = gidx(&r, w.s);
+        nd->r = gidx(&r, nd->r);
+        nd->edges = w.s - w.p;
+        nd->level = w.level;
+        nd->child[0] = nd->child[1] = -1;
+        nd->q = gidx(&r, q);
+        if (w.level > rg->depth) rg->depth = w.level;
+        if (q - w.p >= 2) stack[top++] = (hal2_pending){w.p, q, w.level + 1, &nd->child[0]};
+        if (w.s - q >= 2) stack[top++] = (hal2_pending){q, w.s, w.level + 1, &nd->child[1]};
+    }
+}
 
-/* Builds ring `ring`'s tree (Algorithm 7.1, depth first instead of level by level: the nodes
- * are the same). `stack` holds at least ring-count entries. */
-static void build_ring(fl_hal2 *hal, uint32_t ring, uint32_t *order, pending *stack)
+void fl_hal2_build_ring(fl_hal2 *hal, uint32_t ring, uint32_t *order, hal2_pending *stack)
 {
     fl_hal2_ring *rg = &hal->rings[ring];
-    ring_ctx r = {hal->polygon.xy, rg->first, rg->count};
-    for (uint32_t k = 0; k < r.n; k++)
-        order[k] = r.first + k;
+    for (uint32_t k = 0; k < rg->count; k++)
+        order[k] = rg->first + k;
     uint32_t i, j;
-    fl_hal2_sbd(r.xy, order, r.n, &i, &j, rg->disc);
+    fl_hal2_sbd(hal->polygon.xy, order, rg->count, &i, &j, rg->disc);
     if (i > j) {
         uint32_t t = i;
         i = j;
@@ -192,28 +212,20 @@ static void build_ring(fl_hal2 *hal, uint32_t ring, uint32_t *order, pending *st
     rg->root[1] = j;
     rg->child[0] = rg->child[1] = -1;
     rg->depth = 0;
-    uint32_t li = i - r.first, lj = j - r.first;
+    uint32_t li = i - rg->first, lj = j - rg->first;
     size_t top = 0;
-    if (lj - li >= 2) stack[top++] = (pending){li, lj, 1, &rg->child[0]};
-    if (li + r.n - lj >= 2) stack[top++] = (pending){lj, li + r.n, 1, &rg->child[1]};
-    while (top > 0) {
-        pending w = stack[--top];
-        size_t id = hal->node_count++;
-        fl_hal2_node *nd = &hal->nodes[id];
-        memset(nd, 0, sizeof *nd);
-        make_flintstone(&r, w.p, w.s, nd);
-        *w.slot = (int32_t)id;
-        uint32_t q = nd->q;
-        nd->p = gidx(&r, w.p);
-        nd->s = gidx(&r, w.s);
-        nd->edges = w.s - w.p;
-        nd->level = w.level;
-        nd->child[0] = nd->child[1] = -1;
-        nd->q = gidx(&r, q);
-        if (w.level > rg->depth) rg->depth = w.level;
-        if (q - w.p >= 2) stack[top++] = (pending){w.p, q, w.level + 1, &nd->child[0]};
-        if (w.s - q >= 2) stack[top++] = (pending){q, w.s, w.level + 1, &nd->child[1]};
-    }
+    if (lj - li >= 2) stack[top++] = (hal2_pending){li, lj, 1, &rg->child[0]};
+    if (li + rg->count - lj >= 2)
+        stack[top++] = (hal2_pending){lj, li + rg->count, 1, &rg->child[1]};
+    grow(hal, rg, stack, top);
+}
+
+void fl_hal2_rebuild_node(fl_hal2 *hal, uint32_t ring, int32_t *slot, uint32_t p, uint32_t s,
+                          uint32_t level, hal2_pending *stack)
+{
+    fl_hal2_ring *rg = &hal->rings[ring];
+    stack[0] = (hal2_pending){p, s, level, slot};
+    grow(hal, rg, stack, 1);
 }
 
 /* Checks the polygon's ranges and coordinates; the ring count limit keeps indices in int32. */
@@ -278,7 +290,7 @@ fl_status fl_hal2_build(const fl_polygon *polygon, const fl_hal2_options *opt, f
     fl_status st = check_polygon(polygon, &max_ring, err);
     if (st != FL_OK) return st;
     uint32_t *order = fl_alloc_array(max_ring + 1, sizeof(uint32_t));
-    pending *stack = fl_alloc_array(max_ring + 1, sizeof(pending));
+    hal2_pending *stack = fl_alloc_array(max_ring + 1, sizeof(hal2_pending));
     out->rings = fl_calloc_array(polygon->ring_count + 1, sizeof(fl_hal2_ring));
     out->nodes = fl_alloc_array(polygon->vertex_count + 1, sizeof(fl_hal2_node));
     if (!order || !stack || !out->rings || !out->nodes || copy_polygon(polygon, &out->polygon)) {
@@ -293,7 +305,7 @@ fl_status fl_hal2_build(const fl_polygon *polygon, const fl_hal2_options *opt, f
         }
         out->rings[r].first = (uint32_t)polygon->ring_start[r];
         out->rings[r].count = (uint32_t)(polygon->ring_start[r + 1] - polygon->ring_start[r]);
-        build_ring(out, (uint32_t)r, order, stack);
+        fl_hal2_build_ring(out, (uint32_t)r, order, stack);
         if (out->rings[r].depth > out->depth) out->depth = out->rings[r].depth;
     }
 done:

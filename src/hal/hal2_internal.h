@@ -41,4 +41,21 @@ void fl_hal2_sbd(const double *xy, uint32_t *idx, size_t n, uint32_t *i, uint32_
 /* Exact sign of (p - a) . (p - b): < 0 when p is strictly inside the circle with diameter ab. */
 int fl_hal2_diametral_sign(const double *a, const double *b, const double *p);
 
+/* A polyline waiting for its node: ring-local positions p < s (s may pass the ring's end),
+ * its level, and where the new node's index goes. */
+typedef struct hal2_pending {
+    uint32_t p, s, level;
+    int32_t *slot;
+} hal2_pending;
+
+/* (Re)builds ring `ring`'s tree from its smallest enclosing disc (hal2_build.c), appending
+ * nodes to hal->nodes, which must have room for one node a ring vertex; order and stack need
+ * one entry a ring vertex. */
+void fl_hal2_build_ring(fl_hal2 *hal, uint32_t ring, uint32_t *order, hal2_pending *stack);
+
+/* Builds the subtree of the polyline at ring-local positions p..s (s >= p + 2) at `level`,
+ * storing its root's index in *slot. Same room requirements. */
+void fl_hal2_rebuild_node(fl_hal2 *hal, uint32_t ring, int32_t *slot, uint32_t p, uint32_t s,
+                          uint32_t level, hal2_pending *stack);
+
 #endif /* FL_HAL2_INTERNAL_H */

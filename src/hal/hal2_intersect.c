@@ -140,19 +140,19 @@ fl_status fl_hal2_intersect(const fl_hal2 *a, const fl_hal2 *b, int first_only, 
     fl_vec stack, found;
     fl_vec_init(&stack, sizeof(item_pair));
     fl_vec_init(&found, 2 * sizeof(uint32_t));
-    int failed = 0;
-    for (size_t i = 0; i < a->polygon.ring_count && !failed; i++)
-        for (size_t j = 0; j < b->polygon.ring_count && !failed; j++) {
+    int failed = 0, done = 0;
+    for (size_t i = 0; i < a->polygon.ring_count && !failed && !done; i++)
+        for (size_t j = 0; j < b->polygon.ring_count && !failed && !done; j++) {
             const fl_hal2_ring *ra = &a->rings[i], *rb = &b->rings[j];
             item_pair root = {{ITEM_RING, (uint32_t)i, 0, 0, ra->count},
                               {ITEM_RING, (uint32_t)j, 0, 0, rb->count}};
             failed = fl_vec_push(&stack, &root, 1);
-            while (!failed && stack.count > 0 && !(first_only && found.count > 0)) {
+            while (!failed && !done && stack.count > 0) {
                 item_pair pr = ((item_pair *)stack.data)[--stack.count];
                 failed = step(a, b, &pr, &stack, &found);
+                done = first_only && found.count > 0;
             }
             stack.count = 0;
-            if (first_only && found.count > 0) i = a->polygon.ring_count;
         }
     fl_vec_free(&stack);
     if (failed) {

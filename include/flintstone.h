@@ -804,6 +804,141 @@ void fl_reconstruction3_free(fl_reconstruction3 *rec);
 /* end of reconstruct */
 
 
+/* ==== hal ================================================================================= */
+/* (section owned by src/hal; docs/hal.md)
+ *
+ * Hierarchical approximation and localization of closed polygons by flintstones (thesis ch. 7
+ * §7.2, §7.4; HAL paper §3, §5). Every ring of an fl_polygon (outer boundaries and holes alike)
+ * gets its own binary flintstone tree: the root holds the two vertices v_i, v_j on the smallest
+ * enclosing disc that are farthest apart (level 0, the approximation v_i v_j v_i) and that disc;
+ * every other node covers a polyline v_p..v_s of the ring by its flintstone, the intersection of
+ * two discs through v_p and v_s (or a disc and a half-plane), and splits it at the vertex v_q of
+ * the disc with the larger signed radius. The infix order of a tree is the ring (Fig. 7.5);
+ * there are (ring vertices - 2) nodes a ring, so storage is Θ(N). Which side a vertex is on and
+ * which disc contains which vertex are decided with the exact predicates; the stored discs are
+ * floating point, enlarged so that they provably contain every vertex of their polyline. */
+
+/* Shape of a node's bounding area. */
+enum {
+    FL_HAL2_TWO_DISCS = 0,      /* disc[0] ∩ disc[1]; vertices on both sides of v_p v_s */
+    FL_HAL2_DISC_HALFPLANE = 1, /* disc[0] ∩ the closed half-plane of v_p v_s on side `side` */
+    FL_HAL2_SEGMENT = 2,        /* every vertex lies on the segment v_p v_s (a collinear run) */
+    FL_HAL2_DISC = 3 /* disc[0] alone: a guard for a polyline in no disc through v_p and v_s,
+                        which HAL Thm. 1 excludes; reachable only when the smallest enclosing
+                        disc was decided in floating point (coordinates beyond 2^500) */
+};
+
+/* One node: the flintstone of the polyline v_p v_(p+1) .. v_s along its ring (indices wrap
+ * around the ring), split at v_q into v_p..v_q and v_q..v_s. Vertex indices are global indices
+ * into fl_hal2.polygon.xy. */
+typedef struct fl_hal2_node {
+    uint32_t p, q, s;
+    uint32_t r;        /* the extreme vertex on the other side of v_p v_s (Def. 7.3); = q when
+                          that side is empty (and for FL_HAL2_SEGMENT, FL_HAL2_DISC) */
+    uint32_t edges;    /* edges of v_p..v_s along the ring, >= 2 */
+    int32_t child[2];  /* nodes of v_p..v_q and v_q..v_s; -1 when that part is a single edge */
+    uint32_t level;    /* approximation level at which v_q appears (the root's polylines: 1) */
+    uint8_t kind;      /* FL_HAL2_* above */
+    int8_t side;       /* FL_HAL2_DISC_HALFPLANE: fl_orient2d(v_p, v_s, v) of the vertices */
+    double disc[2][3]; /* (cx, cy, r^2) of the discs; disc[1] only for FL_HAL2_TWO_DISCS */
+    double width[2];   /* Def. 7.4 widths w1 (disc through v_q), w2 (0 for a half-plane) */
+    double error;      /* certified bound on the distance of every point of v_p..v_s to the
+                          segment v_p v_s: max(w1, w2) plus a 1e-10 relative rounding margin */
+} fl_hal2_node;
+
+/* One ring's tree. The ring is vertices first .. first+count-1 of the polygon. */
+typedef struct fl_hal2_ring {
+    uint32_t first, count;
+    uint32_t root[2]; /* v_i, v_j: level 0 */
+    int32_t child[2]; /* nodes of v_i..v_j and v_j..v_i; -1 when that part is a single edge */
+    double disc[3];   /* smallest enclosing disc (cx, cy, r^2), enlarged to contain the ring */
+    uint32_t depth;   /* deepest level of the tree: approximations at levels >= depth are the
+                         ring itself */
+} fl_hal2_ring;
+
+/* A flintstone forest: a copy of the polygon, one tree per ring, the nodes of all trees. */
+typedef struct fl_hal2 {
+    fl_polygon polygon;
+    fl_hal2_ring *rings; /* polygon.ring_count */
+    size_t node_count;
+    fl_hal2_node *nodes;
+    uint32_t depth; /* max over rings */
+} fl_hal2;
+
+/* Options; all zero is the default. */
+typedef struct fl_hal2_options {
+    fl_progress_fn progress; /* called once a ring; may be NULL */
+    void *progress_user;
+} fl_hal2_options;
+
+/* Builds the flintstone tree of every ring of `polygon` (Algorithm 7.1). `opt` may be NULL.
+ * Rings need at least 3 vertices; repeated and collinear vertices are allowed. Time O(N log N)
+ * for balanced splits, O(N^2) worst case (Thm. 7.1); memory Θ(N). Errors (then *out is
+ * zeroed): FL_ERR_USAGE for NULL arguments, FL_ERR_INPUT for inconsistent ring/polygon ranges,
+ * a ring of fewer than 3 vertices, NaN/Inf coordinates or more than 2^31 vertices;
+ * FL_ERR_ALGORITHM when cancelled; FL_ERR_NOMEM. Free with fl_hal2_free. */
+fl_status fl_hal2_build(const fl_polygon *polygon, const fl_hal2_options *opt, fl_hal2 *out,
+                        fl_error *err);
+
+void fl_hal2_free(fl_hal2 *hal);
+
+/* The level-`level` approximation (§7.2.2): every ring reduced to its tree's vertices of levels
+ * 0..level, in ring order, same ring/polygon structure as the input (a ring at level 0 has 2
+ * vertices). A level >= hal->depth gives the original polygon. *error (may be NULL) receives the
+ * certified error, eq. (e5): the largest error of the nodes just below the cut (0 when nothing
+ * was cut); every point of the original rings is within *error of the approximation, polyline
+ * by polyline. Free *out with fl_polygon_free. Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
+fl_status fl_hal2_approximate_level(const fl_hal2 *hal, uint32_t level, fl_polygon *out,
+                                    double *error, fl_error *err);
+
+/* The adaptive approximation (§7.2.3): a polyline is refined only while its node's error
+ * exceeds max_error (>= 0). *error (may be NULL) receives the certified error (<= max_error),
+ * *level (may be NULL) the deepest level used. Errors: FL_ERR_USAGE for a negative or NaN
+ * max_error or NULL arguments, FL_ERR_NOMEM. */
+fl_status fl_hal2_approximate_error(const fl_hal2 *hal, double max_error, fl_polygon *out,
+                                    double *error, uint32_t *level, fl_error *err);
+
+/* Dynamic insertion (thesis §7.5): inserts the point xy[0], xy[1] into the ring of vertex
+ * `after`, between `after` and the next vertex of that ring. The new vertex gets index after + 1
+ * and every later vertex index shifts by one (in hal->polygon and in the trees). The tree is
+ * repaired, not rebuilt: flintstones on the path that still hold the new vertex are kept (their
+ * discs grown), the subtree under the first one that does not is rebuilt, and the whole ring's
+ * tree when its smallest enclosing disc changes its farthest pair. Node indices change. Cost
+ * O(N) for the renumbering plus the rebuilt subtree. Errors: FL_ERR_USAGE for NULL or a vertex
+ * index out of range, FL_ERR_INPUT for a NaN/Inf point, FL_ERR_NOMEM (hal then unchanged). */
+fl_status fl_hal2_insert(fl_hal2 *hal, uint32_t after, const double *xy, fl_error *err);
+
+/* Where a query point is relative to the polygon, by the even-odd rule over all rings. */
+enum { FL_HAL2_OUTSIDE = 0, FL_HAL2_INSIDE = 1, FL_HAL2_BOUNDARY = 2 };
+
+/* Hierarchical point inclusion (thesis Lemma 6.1, HAL paper §5.1) for the n points xy[2k],
+ * xy[2k+1]: where[k] = FL_HAL2_BOUNDARY when the point lies on an edge (exactly, by
+ * fl_orient2d), else FL_HAL2_INSIDE or FL_HAL2_OUTSIDE by the parity of crossings of a
+ * rightward ray with all rings. The answers are exactly those of the brute-force test over
+ * every edge with exact predicates; the flintstones only prune. Errors: FL_ERR_USAGE for NULL
+ * buffers (n > 0), FL_ERR_INPUT for a NaN/Inf query (where[] is then unspecified). */
+fl_status fl_hal2_contains(const fl_hal2 *hal, const double *xy, size_t n, uint8_t *where,
+                           fl_error *err);
+
+/* Intersecting edge pairs: pairs[2k] is an edge of a, pairs[2k+1] an edge of b; an edge is named
+ * by its first vertex (global index; the edge runs to the next vertex of its ring). */
+typedef struct fl_hal2_pairs {
+    size_t count;
+    uint32_t *pairs;
+} fl_hal2_pairs;
+
+void fl_hal2_pairs_free(fl_hal2_pairs *pairs);
+
+/* Hierarchical intersection (§7.4, HAL paper §5.2): all pairs of closed edges, one of a and one
+ * of b, that share at least one point (touching and collinear overlap included, decided
+ * exactly), sorted by (edge of a, edge of b). With first_only != 0 the search stops at the first
+ * pair found (count is then 0 or 1). *out must be freed with fl_hal2_pairs_free. Errors:
+ * FL_ERR_USAGE for NULL arguments, FL_ERR_NOMEM. */
+fl_status fl_hal2_intersect(const fl_hal2 *a, const fl_hal2 *b, int first_only, fl_hal2_pairs *out,
+                            fl_error *err);
+
+/* end of hal */
+
 #ifdef __cplusplus
 }
 #endif

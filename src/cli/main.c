@@ -13,7 +13,7 @@ static const cli_command commands[] = {
      cmd_delaunay},
     {"graph", "γ-neighbourhood graphs and the classical graphs (hull, Delaunay, Gabriel, ...)",
      cmd_graph},
-    {"reconstruct", "the boundary through every point: a simple polygon (2D) by constriction",
+    {"reconstruct", "the boundary through every point: simple polygon (2D), genus-0 mesh (3D)",
      cmd_reconstruct},
     {"version", "print the version", cmd_version},
 };

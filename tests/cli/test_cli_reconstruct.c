@@ -35,6 +35,34 @@ static void test_reconstruct_leaf_recovers_the_curve_order(void)
     remove("rec_leaf.xy");
 }
 
+/* The bundled peanut (1500 points on a closed surface): a closed, oriented genus-0 manifold
+ * through every point, confirmed by `check` reading the written file, which also finds no
+ * self-intersecting triangle pair (exact). */
+static void test_reconstruct_peanut_is_closed_genus_zero_through_all_points(void)
+{
+    CHECK_EQ_INT(cli_run(&r, "reconstruct '" FL_SOURCE_DIR
+                             "/data/demo/peanut.xyz' --json -o rec_peanut.off"),
+                 0);
+    CHECK(strstr(r.out, "\"boundary_vertices\":1500") != NULL);
+    CHECK(strstr(r.out, "\"all_on_boundary\":true") != NULL);
+    CHECK_EQ_INT(cli_run(&r, "check rec_peanut.off --json"), 0);
+    CHECK(strstr(r.out, "\"closed\":true") != NULL);
+    CHECK(strstr(r.out, "\"manifold\":true") != NULL);
+    CHECK(strstr(r.out, "\"oriented\":true") != NULL);
+    CHECK(strstr(r.out, "\"genus\":0") != NULL);
+    CHECK(strstr(r.out, "\"self_intersections\":0") != NULL);
+    CHECK(strstr(r.out, "\"unreferenced_vertices\":0") != NULL);
+    remove("rec_peanut.off");
+}
+
+static void test_reconstruct_coplanar_points_exit_3(void)
+{
+    cli_write_file("rec_plane.xyz", "0 0 0\n1 0 0\n0 1 0\n1 1 0\n");
+    CHECK_EQ_INT(cli_run(&r, "reconstruct rec_plane.xyz"), 3);
+    CHECK(strstr(r.err, "coplanar") != NULL);
+    remove("rec_plane.xyz");
+}
+
 static void test_reconstruct_collinear_points_exit_3(void)
 {
     cli_write_file("rec_line.xy", "0 0\n1 0\n2 0\n3 0\n");
@@ -60,5 +88,7 @@ static void test_reconstruct_bad_kept_edges_exit_2(void)
 }
 
 FL_TEST_MAIN(FL_TEST_CASE(test_reconstruct_leaf_recovers_the_curve_order),
+             FL_TEST_CASE(test_reconstruct_peanut_is_closed_genus_zero_through_all_points),
+             FL_TEST_CASE(test_reconstruct_coplanar_points_exit_3),
              FL_TEST_CASE(test_reconstruct_collinear_points_exit_3),
              FL_TEST_CASE(test_reconstruct_bad_kept_edges_exit_2))

@@ -8,5 +8,8 @@ int cmd_demo(int argc, char **argv);
 int cmd_delaunay(int argc, char **argv);
 int cmd_graph(int argc, char **argv);
 int cmd_reconstruct(int argc, char **argv);
+int cmd_hal(int argc, char **argv);
+int cmd_inside(int argc, char **argv);
+int cmd_intersect(int argc, char **argv);
 
 #endif

@@ -15,6 +15,9 @@ static const cli_command commands[] = {
      cmd_graph},
     {"reconstruct", "the boundary through every point: simple polygon (2D), genus-0 mesh (3D)",
      cmd_reconstruct},
+    {"hal", "flintstone tree of a polygon: approximation by level or certified error", cmd_hal},
+    {"inside", "point inclusion in a polygon through its flintstone tree", cmd_inside},
+    {"intersect", "do two polygons' boundaries intersect (flintstone trees)", cmd_intersect},
     {"version", "print the version", cmd_version},
 };
 

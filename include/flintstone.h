@@ -694,7 +694,7 @@ typedef struct fl_closest {
 /* Builds the hierarchy over the triangles of `mesh` (any topology: open, non-manifold,
  * degenerate or repeated triangles and duplicate vertices are fine). Every vertex coordinate
  * must be finite and every index < vertex_count; at least one triangle, fewer than 2^31.
- * opt may be NULL. Cost O(T log T) time, about 100 bytes a triangle. On failure *out is NULL;
+ * opt may be NULL. Cost O(T log T) time, about 240 bytes a triangle. On failure *out is NULL;
  * FL_ERR_USAGE for NULL arguments, FL_ERR_INPUT for bad meshes, FL_ERR_NOMEM. Free with
  * fl_sweep_free. */
 fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sweep **out,

@@ -106,28 +106,63 @@ static void representative(const fl_mesh *m, const uint32_t *perm, size_t start,
         }
 }
 
-/* The bounding element of a node: the smallest triangle standing on one side of the bounding
- * rectangle of the vertices' projections (base twice the rectangle's width, height twice its
- * height, area 2 w h) placed at the mid-plane, and ε = the farthest vertex from it. */
+/* A triangle enclosing the 2D points uv[0..n): over the four sides of their bounding box as
+ * base and three side slopes around the one that gives area 2wh for a rectangle, the
+ * smallest of the triangles whose two sides touch the points. Writes the corners to tri. */
+static void enclosing_triangle(const double *uv, size_t n, const double *lo, const double *hi,
+                               double tri[3][2])
+{
+    static const int axis[4][2] = {{0, 1}, {0, 1}, {1, 0}, {1, 0}}; /* (x, y) from (u, v) */
+    static const double flip[4] = {1, -1, 1, -1};
+    double best = INFINITY;
+    for (int o = 0; o < 4; o++) {
+        int ax = axis[o][0], ay = axis[o][1];
+        double w = hi[ax] - lo[ax], h = hi[ay] - lo[ay];
+        double y0 = flip[o] > 0 ? lo[ay] : -hi[ay];
+        double s0 = w > 0 && h > 0 ? 2 * h / w : 1;
+        for (int k = 0; k < 3; k++) {
+            double slope = s0 * (k == 0 ? 0.5 : k == 1 ? 1 : 2), left = INFINITY, right = -INFINITY;
+            for (size_t i = 0; i < n; i++) {
+                double x = uv[2 * i + ax], y = flip[o] * uv[2 * i + ay] - y0;
+                left = fmin(left, x - y / slope);
+                right = fmax(right, x + y / slope);
+            }
+            double area = slope * (right - left) * (right - left);
+            if (!(area < best)) continue;
+            best = area;
+            double corner[3][2] = {
+                {left, 0}, {right, 0}, {(left + right) / 2, slope * (right - left) / 2}};
+            for (int c = 0; c < 3; c++) {
+                tri[c][ax] = corner[c][0];
+                tri[c][ay] = flip[o] * (corner[c][1] + y0);
+            }
+        }
+    }
+}
+
+/* The bounding element of a node: a triangle in the principal plane of the node's vertices
+ * (at the mid-plane of their spread along the normal) enclosing their projections, and ε =
+ * the farthest vertex from it. uv is scratch room for 6 doubles a triangle. */
 static void bounding_triangle(const fl_mesh *m, const uint32_t *perm, size_t start, size_t end,
-                              double scale, fl_sweep_node *node)
+                              double scale, double *uv, fl_sweep_node *node)
 {
     double mean[3], e[3][3], lo[3] = {INFINITY, INFINITY, INFINITY};
     double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     principal_frame(m, perm, start, end, mean, e);
+    size_t n = 0;
     for (size_t i = start; i < end; i++)
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < 3; k++, n++) {
             const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
             for (int a = 0; a < 3; a++) {
                 double x = (p[0] - mean[0]) * e[a][0] + (p[1] - mean[1]) * e[a][1] +
                            (p[2] - mean[2]) * e[a][2];
+                if (a < 2) uv[2 * n + a] = x;
                 lo[a] = fmin(lo[a], x);
                 hi[a] = fmax(hi[a], x);
             }
         }
-    double w = hi[0] - lo[0], h = hi[1] - lo[1], mid_n = (lo[2] + hi[2]) / 2;
-    double corner[3][2] = {
-        {lo[0] - w / 2, lo[1]}, {hi[0] + w / 2, lo[1]}, {(lo[0] + hi[0]) / 2, lo[1] + 2 * h}};
+    double corner[3][2], mid_n = (lo[2] + hi[2]) / 2;
+    enclosing_triangle(uv, n, lo, hi, corner);
     for (int k = 0; k < 3; k++)
         for (int c = 0; c < 3; c++)
             node->v[3 * k + c] =
@@ -226,7 +261,12 @@ static fl_status split_ranges(fl_sweep *s, const fl_mesh *m, uint32_t *perm, con
                               const fl_sweep_options *opt, fl_error *err)
 {
     range *stack = fl_alloc_array(s->node_count, sizeof *stack);
-    if (!stack) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
+    double *uv = fl_alloc_array(s->elements, 6 * sizeof *uv);
+    if (!stack || !uv) {
+        free(stack);
+        free(uv);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
+    }
     size_t top = 0, next = 1, done = 0;
     stack[top++] = (range){0, s->elements, 0};
     while (top > 0) {
@@ -238,11 +278,12 @@ static fl_status split_ranges(fl_sweep *s, const fl_mesh *m, uint32_t *perm, con
                 fl_progress(opt->progress, opt->progress_user, "sweep hierarchy",
                             (double)done / (double)s->elements)) {
                 free(stack);
+                free(uv);
                 return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
             }
             continue;
         }
-        bounding_triangle(m, perm, r.start, r.end, s->scale, node);
+        bounding_triangle(m, perm, r.start, r.end, s->scale, uv, node);
         size_t mid = r.start + (r.end - r.start) / 2;
         select_median(perm, centroid, widest_axis(perm, centroid, r.start, r.end), r.start, mid,
                       r.end);
@@ -254,6 +295,7 @@ static fl_status split_ranges(fl_sweep *s, const fl_mesh *m, uint32_t *perm, con
         next += 2;
     }
     free(stack);
+    free(uv);
     return FL_OK;
 }
 

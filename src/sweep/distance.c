@@ -121,6 +121,15 @@ double fl_sweep_node_distance(const fl_sweep *s, const fl_sweep_node *node, cons
     return sqrt(d2);
 }
 
+int fl_sweep_lift_query(const fl_sweep *s, const double *q, double *q3)
+{
+    for (int c = 0; c < 3; c++) {
+        q3[c] = c < s->dim ? q[c] : 0;
+        if (!isfinite(q3[c])) return 0;
+    }
+    return 1;
+}
+
 fl_status fl_sweep_alloc(int dim, int triangles, size_t elements, fl_sweep **out, fl_error *err)
 {
     fl_sweep *s = calloc(1, sizeof *s);

@@ -1,86 +1,39 @@
-/* The priority process of §3.2 on intervals [d - ε, d + ε] keyed by d - ε, shared by polylines
- * and meshes (§4.2: "nothing else is changed in the priority structure"), with the pruning by
- * the best upper bound, the early stop on a tolerance, the constant-time coherence ball of
- * §3.3, and the n-closest / within-distance variants of §4.4.
+/* Closest-point queries: the priority process of §3.2 on intervals [d - ε, d + ε] keyed by
+ * d - ε, shared by polylines and meshes (§4.2: "nothing else is changed in the priority
+ * structure"), with the early stop on a tolerance, the constant-time coherence ball of §3.3
+ * and the small-motion update of §5.1.
  *
- * Rounding: every lower bound is lowered and every upper bound raised by a slack of a few ulps
- * of the largest coordinate involved, so pruning never discards a region that could hold a
- * nearer point than the one returned, beyond that slack. A leaf's key is its distance itself,
- * so the first leaf to leave the queue is the closest element. */
-#include <float.h>
+ * The cursor keeps its queue between queries (§5.1). The queue always holds a cut of the
+ * hierarchy — regions that together cover the shape — so regions are never pruned, only left
+ * at the back. When the query point moves by δ every interval widens by δ on both sides; the
+ * priorities do not change, so instead of touching the queue the cursor adds δ to the distance
+ * it has travelled, and an entry's current lower bound is key - (travelled - base). An entry
+ * whose base is not the current travelled distance is "dirty": when it reaches the front its
+ * distance is recomputed. The first clean leaf at the front is the closest element.
+ *
+ * Rounding: lower bounds are lowered and upper bounds raised by a slack of 64 ulps of the
+ * largest coordinate involved, so rounding never lets a nearer region stay behind. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "core/core.h"
+#include "sweep/sweep_heap.h"
 #include "sweep/sweep_internal.h"
-
-typedef struct heap_entry {
-    double key;
-    uint32_t node;
-} heap_entry;
-
-/* A binary min-heap on an array sized once for all the nodes (each node enters at most once
- * per query), so a query allocates nothing. */
-typedef struct heap {
-    heap_entry *e;
-    size_t n;
-} heap;
-
-static void heap_push(heap *h, double key, uint32_t node)
-{
-    size_t i = h->n++;
-    while (i > 0 && h->e[(i - 1) / 2].key > key) {
-        h->e[i] = h->e[(i - 1) / 2];
-        i = (i - 1) / 2;
-    }
-    h->e[i] = (heap_entry){key, node};
-}
-
-static heap_entry heap_pop(heap *h)
-{
-    heap_entry top = h->e[0], last = h->e[--h->n];
-    size_t i = 0;
-    for (;;) {
-        size_t c = 2 * i + 1;
-        if (c >= h->n) break;
-        if (c + 1 < h->n && h->e[c + 1].key < h->e[c].key) c++;
-        if (h->e[c].key >= last.key) break;
-        h->e[i] = h->e[c];
-        i = c;
-    }
-    if (h->n > 0) h->e[i] = last;
-    return top;
-}
 
 struct fl_sweep_cursor {
     const fl_sweep *s;
-    heap h;
-    int have_ball; /* §3.3: the last exact answer's ball is valid */
+    fl_sweep_heap h;
+    double q[3];          /* the last query */
+    double travelled;     /* sum of the query's moves since the queue was reset (§5.1) */
+    size_t reset_cost;    /* distances computed by the last query that started from the root */
+    size_t last_cost;     /* distances computed by the last query */
+    double last_distance; /* the last query's distance (or interval midpoint) */
+    int started;          /* the queue holds a cut of the hierarchy */
+    int have_ball;        /* §3.3: the last exact answer's ball is valid */
     double center[3];
     double radius;
     uint32_t leaf; /* the node that is closest anywhere inside the ball */
 };
-
-static int is_leaf(const fl_sweep_node *node)
-{
-    return node->child[0] == FL_SWEEP_LEAF;
-}
-
-static double query_slack(const fl_sweep *s, const double *q)
-{
-    double m = fmax(fmax(fabs(q[0]), fabs(q[1])), fabs(q[2]));
-    return 64 * DBL_EPSILON * (s->scale + m);
-}
-
-/* Lifts a query of dimension s->dim to 3D; 0 if it is not finite. */
-static int lift_query(const fl_sweep *s, const double *q, double *q3)
-{
-    for (int c = 0; c < 3; c++) {
-        q3[c] = c < s->dim ? q[c] : 0;
-        if (!isfinite(q3[c])) return 0;
-    }
-    return 1;
-}
 
 static void fill_leaf(const fl_sweep *s, uint32_t leaf, const double *q3, fl_closest *r)
 {
@@ -91,10 +44,9 @@ static void fill_leaf(const fl_sweep *s, uint32_t leaf, const double *q3, fl_clo
     r->exact = 1;
 }
 
-/* The search state of one closest-point query. */
+/* The state of one query. */
 typedef struct search {
-    double upper;      /* best upper bound so far (§3.2) */
-    double min_pruned; /* smallest lower bound of a region pruned on arrival (§3.3) */
+    double upper; /* best upper bound computed in this query (§3.2) */
     uint32_t best_leaf;
     double best_leaf_d;
     double slack;
@@ -116,15 +68,16 @@ static double upper_bound(const fl_sweep *s, const fl_sweep_node *node, const do
     return sqrt(r2) + slack;
 }
 
-/* Computes a region's interval and queues it unless the best upper bound prunes it. */
-static void visit(const fl_sweep *s, heap *h, search *st, const double *q3, uint32_t id)
+/* Computes a region's interval at the current query and queues it (clean). */
+static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t id)
 {
+    const fl_sweep *s = cur->s;
     const fl_sweep_node *node = s->nodes + id;
     double bary[3], c[3];
     double d = fl_sweep_node_distance(s, node, q3, bary, c);
     st->visited++;
     double lo = d, hi = d;
-    if (!is_leaf(node)) {
+    if (!fl_sweep_is_leaf(node)) {
         lo = d - node->eps - st->slack;
         hi = upper_bound(s, node, q3, d, st->slack);
     } else if (d < st->best_leaf_d) {
@@ -132,20 +85,23 @@ static void visit(const fl_sweep *s, heap *h, search *st, const double *q3, uint
         st->best_leaf = id;
     }
     if (hi < st->upper) st->upper = hi;
-    if (lo > st->upper) {
-        if (lo < st->min_pruned) st->min_pruned = lo;
-        return;
-    }
-    heap_push(h, lo, id);
+    fl_sweep_heap_push(&cur->h, (fl_sweep_entry){lo + cur->travelled, cur->travelled, id});
+}
+
+/* The current lower bound of a queued region (§5.1: widened by the moves since its base). */
+static double current_lower(const fl_sweep_cursor *cur, const fl_sweep_entry *e)
+{
+    return e->key - cur->travelled;
 }
 
 /* §3.3: no other region can come nearer than the second interval's lower end, so within half
- * the gap the answer keeps its element. */
+ * the gap the answer keeps its element. The second smallest key of a heap is at 1 or 2. */
 static void set_ball(fl_sweep_cursor *cur, const search *st, const double *q3, uint32_t leaf,
                      double d)
 {
-    double second = st->min_pruned;
-    if (cur->h.n > 0 && cur->h.e[0].key < second) second = cur->h.e[0].key;
+    double second = INFINITY;
+    for (size_t i = 1; i <= 2 && i < cur->h.n; i++)
+        second = fmin(second, current_lower(cur, cur->h.e + i));
     double r = (second - d) / 2 - st->slack;
     cur->have_ball = r > 0;
     cur->radius = r;
@@ -170,31 +126,61 @@ static void approximate(const fl_sweep *s, const search *st, double lower, const
     r->exact = 0;
 }
 
-/* The priority process (§3.2): pop the lowest lower bound, split it, prune by the best upper
- * bound; the first leaf popped is the answer, or stop once the interval fits the tolerance. */
+/* Starts over from the root ("the mesh is substituted with the base mesh", §4.2) when the
+ * kept queue is unlikely to pay: the query jumped farther than the last distance (so most of
+ * the queue would be dirty), the last query cost more than one from the root, or the queue
+ * has grown far beyond what a query from the root needs. Otherwise accounts the move (§5.1). */
+static void advance(fl_sweep_cursor *cur, const double *q3, search *st)
+{
+    double d2 = 0;
+    for (int c = 0; c < 3; c++)
+        d2 += (q3[c] - cur->q[c]) * (q3[c] - cur->q[c]);
+    int reset = !cur->started || sqrt(d2) > cur->last_distance ||
+                cur->last_cost > cur->reset_cost || cur->h.n > 8 * cur->reset_cost + 64;
+    cur->travelled = reset ? 0 : cur->travelled + sqrt(d2) + st->slack;
+    for (int c = 0; c < 3; c++)
+        cur->q[c] = q3[c];
+    if (!reset) return;
+    cur->h.n = 0;
+    cur->started = 1;
+    cur->reset_cost = SIZE_MAX;
+    visit(cur, st, q3, 0);
+}
+
+/* The priority process (§3.2) on the kept queue: refresh dirty fronts, split clean internal
+ * fronts; the first clean leaf at the front is the answer, or stop once the interval fits the
+ * tolerance. The answer stays queued for the next query. */
 static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_closest *r)
 {
     const fl_sweep *s = cur->s;
-    search st = {INFINITY, INFINITY, FL_SWEEP_LEAF, INFINITY, query_slack(s, q3), 0};
-    heap *h = &cur->h;
-    h->n = 0;
+    search st = {INFINITY, FL_SWEEP_LEAF, INFINITY, fl_sweep_query_slack(s, q3), 0};
+    fl_sweep_heap *h = &cur->h;
     cur->have_ball = 0;
-    visit(s, h, &st, q3, 0);
-    while (h->n > 0) {
-        const fl_sweep_node *node = s->nodes + h->e[0].node;
-        if (!is_leaf(node) && tol > 0 && st.upper - h->e[0].key <= tol) {
-            approximate(s, &st, h->e[0].key, q3, r);
-            break;
+    advance(cur, q3, &st);
+    for (;;) {
+        fl_sweep_entry top = h->e[0];
+        const fl_sweep_node *node = s->nodes + top.node;
+        if (top.base != cur->travelled) {
+            fl_sweep_heap_pop(h);
+            visit(cur, &st, q3, top.node);
+            continue;
         }
-        heap_entry top = heap_pop(h);
-        if (is_leaf(node)) {
+        if (fl_sweep_is_leaf(node)) {
             fill_leaf(s, top.node, q3, r);
             set_ball(cur, &st, q3, top.node, r->distance);
             break;
         }
-        visit(s, h, &st, q3, node->child[0]);
-        visit(s, h, &st, q3, node->child[1]);
+        if (tol > 0 && st.upper - current_lower(cur, &top) <= tol) {
+            approximate(s, &st, current_lower(cur, &top), q3, r);
+            break;
+        }
+        fl_sweep_heap_pop(h);
+        visit(cur, &st, q3, node->child[0]);
+        visit(cur, &st, q3, node->child[1]);
     }
+    if (cur->reset_cost == SIZE_MAX) cur->reset_cost = st.visited;
+    cur->last_cost = st.visited;
+    cur->last_distance = r->distance;
     r->reused = 0;
     r->visited = st.visited;
 }
@@ -205,7 +191,7 @@ fl_status fl_sweep_cursor_new(const fl_sweep *sweep, fl_sweep_cursor **out, fl_e
     *out = NULL;
     if (!sweep) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "sweep hierarchy is NULL");
     fl_sweep_cursor *cur = calloc(1, sizeof *cur);
-    heap_entry *e = fl_alloc_array(sweep->node_count, sizeof *e);
+    fl_sweep_entry *e = fl_alloc_array(sweep->node_count, sizeof *e);
     if (!cur || !e) {
         free(cur);
         free(e);
@@ -231,7 +217,7 @@ fl_status fl_sweep_cursor_closest(fl_sweep_cursor *cursor, const double *q, doub
     if (!cursor || !q || !result)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and result must not be NULL");
     if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
-    if (!lift_query(cursor->s, q, q3))
+    if (!fl_sweep_lift_query(cursor->s, q, q3))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite");
     if (cursor->have_ball) {
         double d2 = 0;
@@ -261,139 +247,4 @@ fl_status fl_sweep_closest(const fl_sweep *sweep, const double *q, size_t nq, do
         st = fl_sweep_cursor_closest(cur, q + i * (size_t)sweep->dim, tolerance, results + i, err);
     fl_sweep_cursor_free(cur);
     return st;
-}
-
-/* §4.4: keep running the priority process past the first leaf; leaves leave the queue in
- * order of distance. Regions farther than `radius` are never queued. Calls emit(leaf, d) for
- * each leaf popped until it returns nonzero. */
-typedef int (*emit_fn)(void *user, uint32_t element, double d);
-
-static void sweep_ordered(const fl_sweep *s, heap *h, const double *q3, double radius, emit_fn emit,
-                          void *user)
-{
-    double slack = query_slack(s, q3), bary[3], c[3];
-    h->n = 0;
-    heap_push(h, -INFINITY, 0);
-    while (h->n > 0) {
-        heap_entry top = heap_pop(h);
-        const fl_sweep_node *node = s->nodes + top.node;
-        if (is_leaf(node)) {
-            if (emit(user, node->element, top.key)) return;
-            continue;
-        }
-        for (int k = 0; k < 2; k++) {
-            const fl_sweep_node *child = s->nodes + node->child[k];
-            double d = fl_sweep_node_distance(s, child, q3, bary, c);
-            double lo = is_leaf(child) ? d : d - child->eps - slack;
-            if (lo <= radius) heap_push(h, lo, node->child[k]);
-        }
-    }
-}
-
-typedef struct knearest_out {
-    uint32_t *elements;
-    double *distances;
-    size_t k, found;
-} knearest_out;
-
-static int emit_knearest(void *user, uint32_t element, double d)
-{
-    knearest_out *o = user;
-    o->elements[o->found] = element;
-    o->distances[o->found] = d;
-    return ++o->found == o->k;
-}
-
-static fl_status ordered_setup(const fl_sweep *sweep, const double *q, double *q3, heap *h,
-                               fl_error *err)
-{
-    if (!sweep || !q)
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "sweep and query must not be NULL");
-    if (!lift_query(sweep, q, q3))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite");
-    h->n = 0;
-    h->e = fl_alloc_array(sweep->node_count, sizeof *h->e);
-    if (!h->e) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a sweep query");
-    return FL_OK;
-}
-
-fl_status fl_sweep_knearest(const fl_sweep *sweep, const double *q, size_t k, uint32_t *elements,
-                            double *distances, size_t *found, fl_error *err)
-{
-    if (!found || (k > 0 && (!elements || !distances)))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "output arrays must not be NULL");
-    *found = 0;
-    double q3[3];
-    heap h;
-    fl_status st = ordered_setup(sweep, q, q3, &h, err);
-    if (st != FL_OK || k == 0) {
-        free(h.e);
-        return st;
-    }
-    knearest_out o = {elements, distances, k, 0};
-    sweep_ordered(sweep, &h, q3, INFINITY, emit_knearest, &o);
-    free(h.e);
-    *found = o.found;
-    return FL_OK;
-}
-
-typedef struct hit {
-    uint32_t element;
-    double d;
-} hit;
-
-typedef struct within_out {
-    fl_vec hits;
-    int failed; /* an allocation failed and stopped the search */
-} within_out;
-
-static int emit_within(void *user, uint32_t element, double d)
-{
-    within_out *o = user;
-    hit one = {element, d};
-    o->failed = fl_vec_push(&o->hits, &one, 1) != 0;
-    return o->failed;
-}
-
-fl_status fl_sweep_within(const fl_sweep *sweep, const double *q, double radius, fl_sweep_hits *out,
-                          fl_error *err)
-{
-    if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "output must not be NULL");
-    *out = (fl_sweep_hits){0, NULL, NULL};
-    if (!(radius >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "radius must be >= 0");
-    double q3[3];
-    heap h;
-    fl_status st = ordered_setup(sweep, q, q3, &h, err);
-    if (st != FL_OK) return st;
-    within_out o = {.failed = 0};
-    fl_vec_init(&o.hits, sizeof(hit));
-    sweep_ordered(sweep, &h, q3, radius, emit_within, &o);
-    free(h.e);
-    size_t n = o.hits.count;
-    if (!o.failed) {
-        out->element = fl_alloc_array(n ? n : 1, sizeof *out->element);
-        out->distance = fl_alloc_array(n ? n : 1, sizeof *out->distance);
-        o.failed = !out->element || !out->distance;
-    }
-    if (o.failed) {
-        fl_vec_free(&o.hits);
-        fl_sweep_hits_free(out);
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hits of a query");
-    }
-    const hit *all = o.hits.data;
-    for (size_t i = 0; i < n; i++) {
-        out->element[i] = all[i].element;
-        out->distance[i] = all[i].d;
-    }
-    out->count = n;
-    fl_vec_free(&o.hits);
-    return FL_OK;
-}
-
-void fl_sweep_hits_free(fl_sweep_hits *hits)
-{
-    if (!hits) return;
-    free(hits->element);
-    free(hits->distance);
-    *hits = (fl_sweep_hits){0, NULL, NULL};
 }

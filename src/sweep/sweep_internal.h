@@ -3,6 +3,7 @@
 #ifndef FL_SWEEP_INTERNAL_H
 #define FL_SWEEP_INTERNAL_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -50,6 +51,22 @@ static inline double fl_sweep_widen(double eps, double scale)
 {
     return eps + 64 * 2.220446049250313e-16 * (eps + scale);
 }
+
+static inline int fl_sweep_is_leaf(const fl_sweep_node *node)
+{
+    return node->child[0] == FL_SWEEP_LEAF;
+}
+
+/* The rounding slack of the distances from q3 (64 ulps of the largest coordinate involved):
+ * query bounds are widened by it so that no region is misjudged because of rounding. */
+static inline double fl_sweep_query_slack(const fl_sweep *s, const double *q3)
+{
+    double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
+    return 64 * 2.220446049250313e-16 * (s->scale + m);
+}
+
+/* Lifts a query of dimension s->dim to 3D (z = 0 for 2D); 0 if it is not finite. */
+int fl_sweep_lift_query(const fl_sweep *s, const double *q, double *q3);
 
 /* Allocates the sweep and its node array (2 * elements - 1 nodes). */
 fl_status fl_sweep_alloc(int dim, int triangles, size_t elements, fl_sweep **out, fl_error *err);

@@ -275,6 +275,42 @@ static void test_sweep_random_walk_uses_coherence_ball(void)
     fl_mesh_free(&m);
 }
 
+/* §5.1: along a slow walk over a closed mesh the cursor keeps its queue, widening the
+ * intervals by each move; every answer (exact, and with a tolerance the interval) stays
+ * correct, and the walk costs fewer distance evaluations than independent queries. */
+static void test_sweep_dynamic_walk_stays_exact_and_is_cheaper(void)
+{
+    fl_mesh m = make_torus(40, 20);
+    fl_sweep *s = NULL;
+    fl_sweep_cursor *cur = NULL;
+    fl_error err;
+    CHECK_STATUS(fl_sweep_build(&m, NULL, &s, &err), FL_OK, &err);
+    CHECK_STATUS(fl_sweep_cursor_new(s, &cur, &err), FL_OK, &err);
+    double q[3] = {1.37, 0.23, 0.41};
+    size_t walk_cost = 0, fresh_cost = 0;
+    for (int step = 0; step < 300 && cur; step++) {
+        for (int c = 0; c < 3; c++)
+            q[c] += urand(-0.003, 0.003);
+        fl_closest r, fresh;
+        double tol = step % 3 == 2 ? 0.01 : 0;
+        CHECK_STATUS(fl_sweep_cursor_closest(cur, q, tol, &r, &err), FL_OK, &err);
+        if (r.exact) {
+            check_exact(&m, q, &r);
+        } else {
+            double bf = (double)brute_distance(&m, q);
+            CHECK(r.lower <= bf + 1e-12 && bf <= r.upper + 1e-12 && r.upper - r.lower <= tol);
+        }
+        if (tol > 0) continue;
+        CHECK_STATUS(fl_sweep_closest(s, q, 1, 0, &fresh, &err), FL_OK, &err);
+        walk_cost += r.visited;
+        fresh_cost += fresh.visited;
+    }
+    CHECK_MSG(2 * walk_cost < fresh_cost, "walk %zu vs fresh %zu distances", walk_cost, fresh_cost);
+    fl_sweep_cursor_free(cur);
+    fl_sweep_free(s);
+    fl_mesh_free(&m);
+}
+
 /* §3.2 early stop: the interval brackets the true distance and is narrower than asked. */
 static void test_sweep_tolerance_interval_brackets_distance(void)
 {
@@ -380,6 +416,7 @@ FL_TEST_MAIN(FL_TEST_CASE(test_sweep_torus_matches_brute_force),
              FL_TEST_CASE(test_sweep_open_nonmanifold_degenerate_matches_brute_force),
              FL_TEST_CASE(test_sweep_volumes_contain_their_triangles),
              FL_TEST_CASE(test_sweep_random_walk_uses_coherence_ball),
+             FL_TEST_CASE(test_sweep_dynamic_walk_stays_exact_and_is_cheaper),
              FL_TEST_CASE(test_sweep_tolerance_interval_brackets_distance),
              FL_TEST_CASE(test_sweep_knearest_and_within_match_brute_force),
              FL_TEST_CASE(test_sweep_rejects_bad_meshes))

@@ -717,14 +717,18 @@ size_t fl_sweep_element_count(const fl_sweep *sweep);
 
 /* Answers nq queries (q holds nq*dim finite doubles, dim = fl_sweep_dim) into results[nq].
  * tolerance = 0 asks for exact answers; tolerance > 0 lets each query stop once its interval
- * is narrower (see fl_closest). Consecutive queries share a coherence ball (§3.3), so ordering
- * the queries along a path makes the batch faster. FL_ERR_USAGE for bad arguments or a
+ * is narrower (see fl_closest). The batch runs through one cursor (below), so queries ordered
+ * along a path are much faster (§3.3, §5.1). FL_ERR_USAGE for bad arguments or a
  * non-finite query (results before it are filled), FL_ERR_NOMEM. */
 fl_status fl_sweep_closest(const fl_sweep *sweep, const double *q, size_t nq, double tolerance,
                            fl_closest *results, fl_error *err);
 
-/* A streaming query state: remembers the coherence ball of the last exact answer (§3.3) and
- * owns the query's priority queue (one array, sized once). */
+/* A streaming query state for query points that move a little at a time. It owns the
+ * priority queue (one array, sized once) and keeps it between queries: a move by δ widens
+ * every queued interval by δ and only the regions that reach the front are recomputed (§5.1);
+ * it also keeps the coherence ball of the last exact answer (§3.3). It starts over from the
+ * root by itself when a query jumps farther than the last distance or the kept queue stops
+ * paying, so any query order is correct. */
 typedef struct fl_sweep_cursor fl_sweep_cursor;
 
 /* Creates a cursor on `sweep`, which must outlive it. FL_ERR_USAGE, FL_ERR_NOMEM. */

@@ -13,6 +13,7 @@
  *
  * Rounding: lower bounds are lowered and upper bounds raised by a slack of 64 ulps of the
  * largest coordinate involved, so rounding never lets a nearer region stay behind. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -78,7 +79,9 @@ static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t i
     st->visited++;
     double lo = d, hi = d;
     if (!fl_sweep_is_leaf(node)) {
-        lo = d - node->eps - st->slack;
+        /* The key lo + travelled, and its difference with a later travelled, round at
+         * the scale of the travelled distance: widen for that too. */
+        lo = d - node->eps - st->slack - 16 * DBL_EPSILON * cur->travelled;
         hi = upper_bound(s, node, q3, d, st->slack);
     } else if (d < st->best_leaf_d) {
         st->best_leaf_d = d;

@@ -276,6 +276,46 @@ static void test_sweep_polyline_knearest_matches_brute_force(void)
     polyline_free(&p);
 }
 
+/* All points equal: every segment is a point, every ε is 0, and the distance is |q - p|. */
+static void test_sweep_polyline_of_one_repeated_point(void)
+{
+    double pts[10] = {1, 2, 1, 2, 1, 2, 1, 2, 1, 2}, q[2] = {4, 6};
+    fl_sweep *s = NULL;
+    fl_error err;
+    for (int closed = 0; closed <= 1; closed++) {
+        CHECK_STATUS(fl_sweep_polyline_build(pts, 5, 2, closed, NULL, &s, &err), FL_OK, &err);
+        fl_closest r;
+        CHECK_STATUS(fl_sweep_closest(s, q, 1, 0, &r, &err), FL_OK, &err);
+        CHECK(r.exact);
+        CHECK_NEAR(r.distance, 5, 1e-15);
+        CHECK_NEAR(r.point[0], 1, 0);
+        CHECK_NEAR(r.point[1], 2, 0);
+        fl_sweep_free(s);
+    }
+}
+
+static int cancel_at_first_report(void *user, const char *stage, double fraction)
+{
+    (void)stage;
+    (void)fraction;
+    ++*(int *)user;
+    return 1;
+}
+
+/* A progress callback that asks to stop ends the build with "cancelled" and no hierarchy. */
+static void test_sweep_build_can_be_cancelled(void)
+{
+    polyline p = make_curve(70000, 2, 1);
+    int calls = 0;
+    fl_sweep_options opt = {.progress = cancel_at_first_report, .progress_user = &calls};
+    fl_sweep *s = NULL;
+    fl_error err;
+    CHECK_STATUS(fl_sweep_polyline_build(p.pts, p.n, 2, 1, &opt, &s, &err), FL_ERR_ALGORITHM, &err);
+    CHECK(s == NULL);
+    CHECK_EQ_INT(calls, 1);
+    polyline_free(&p);
+}
+
 static void test_sweep_polyline_rejects_bad_input(void)
 {
     fl_error err;
@@ -293,4 +333,6 @@ FL_TEST_MAIN(FL_TEST_CASE(test_sweep_polylines_2d_3d_open_closed_match_brute_for
              FL_TEST_CASE(test_sweep_polyline_tolerance_interval_brackets_distance),
              FL_TEST_CASE(test_sweep_polyline_coherent_walk_reuses_ball),
              FL_TEST_CASE(test_sweep_polyline_knearest_matches_brute_force),
+             FL_TEST_CASE(test_sweep_polyline_of_one_repeated_point),
+             FL_TEST_CASE(test_sweep_build_can_be_cancelled),
              FL_TEST_CASE(test_sweep_polyline_rejects_bad_input))

@@ -693,7 +693,8 @@ typedef struct fl_closest {
 
 /* Builds the hierarchy over the triangles of `mesh` (any topology: open, non-manifold,
  * degenerate or repeated triangles and duplicate vertices are fine). Every vertex coordinate
- * must be finite and every index < vertex_count; at least one triangle, fewer than 2^31.
+ * must be finite with |x| <= 1e150 (so squared distances cannot overflow; queries too) and
+ * every index < vertex_count; at least one triangle, fewer than 2^31.
  * opt may be NULL. Cost O(T log T) time, about 240 bytes a triangle. On failure *out is NULL;
  * FL_ERR_USAGE for NULL arguments, FL_ERR_INPUT for bad meshes, FL_ERR_NOMEM. Free with
  * fl_sweep_free. */
@@ -701,7 +702,7 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
                          fl_error *err);
 
 /* Builds the hierarchy over a polyline of n points of dimension dim (2 or 3), coordinates
- * interleaved in `points` (n*dim finite doubles). Open (closed = 0): n-1 segments, n >= 2;
+ * interleaved in `points` (n*dim finite doubles, |x| <= 1e150). Open (closed = 0): n-1 segments, n >= 2;
  * closed: n segments (the last joins point n-1 to point 0), n >= 2. Repeated points are fine.
  * The hierarchy is the iterative end-point fit of §3.1; its cost is O(n log n) for typical
  * curves and O(n^2) at worst (e.g. a spiral). Same errors as fl_sweep_build. */
@@ -715,7 +716,7 @@ void fl_sweep_free(fl_sweep *sweep);
 int fl_sweep_dim(const fl_sweep *sweep);
 size_t fl_sweep_element_count(const fl_sweep *sweep);
 
-/* Answers nq queries (q holds nq*dim finite doubles, dim = fl_sweep_dim) into results[nq].
+/* Answers nq queries (q holds nq*dim finite doubles, |x| <= 1e150, dim = fl_sweep_dim) into results[nq].
  * tolerance = 0 asks for exact answers; tolerance > 0 lets each query stop once its interval
  * is narrower (see fl_closest). The batch runs through one cursor (below), so queries ordered
  * along a path are much faster (§3.3, §5.1). FL_ERR_USAGE for bad arguments or a

@@ -245,8 +245,9 @@ static fl_status check_mesh(const fl_mesh *m, fl_error *err)
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "too many triangles (%zu)", m->triangle_count);
     for (size_t v = 0; v < m->vertex_count; v++)
         for (int c = 0; c < 3; c++)
-            if (!isfinite(m->xyz[3 * v + c]))
-                return fl_fail(err, FL_ERR_INPUT, NULL, -1, "vertex %zu is not finite", v);
+            if (!fl_sweep_coord_ok(m->xyz[3 * v + c]))
+                return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                               "vertex %zu is not finite or beyond 1e150", v);
     for (size_t t = 0; t < m->triangle_count; t++)
         for (int k = 0; k < 3; k++)
             if (m->tri[3 * t + k] >= m->vertex_count)

@@ -61,9 +61,9 @@ static fl_status check_polyline(const double *points, size_t n, int dim, fl_erro
     if (n >= (size_t)1 << 31)
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "too many polyline points (%zu)", n);
     for (size_t k = 0; k < n * (size_t)dim; k++)
-        if (!isfinite(points[k]))
-            return fl_fail(err, FL_ERR_INPUT, NULL, -1, "polyline point %zu is not finite",
-                           k / (size_t)dim);
+        if (!fl_sweep_coord_ok(points[k]))
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                           "polyline point %zu is not finite or beyond 1e150", k / (size_t)dim);
     return FL_OK;
 }
 

@@ -125,7 +125,7 @@ int fl_sweep_lift_query(const fl_sweep *s, const double *q, double *q3)
 {
     for (int c = 0; c < 3; c++) {
         q3[c] = c < s->dim ? q[c] : 0;
-        if (!isfinite(q3[c])) return 0;
+        if (!fl_sweep_coord_ok(q3[c])) return 0;
     }
     return 1;
 }

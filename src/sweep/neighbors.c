@@ -53,7 +53,7 @@ static fl_status ordered_setup(const fl_sweep *sweep, const double *q, double *q
     if (!sweep || !q)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "sweep and query must not be NULL");
     if (!fl_sweep_lift_query(sweep, q, q3))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite");
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
     h->n = 0;
     h->e = fl_alloc_array(sweep->node_count, sizeof *h->e);
     if (!h->e) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a sweep query");

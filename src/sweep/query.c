@@ -221,7 +221,7 @@ fl_status fl_sweep_cursor_closest(fl_sweep_cursor *cursor, const double *q, doub
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and result must not be NULL");
     if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
     if (!fl_sweep_lift_query(cursor->s, q, q3))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite");
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
     if (cursor->have_ball) {
         double d2 = 0;
         for (int c = 0; c < 3; c++)

@@ -52,6 +52,14 @@ static inline double fl_sweep_widen(double eps, double scale)
     return eps + 64 * 2.220446049250313e-16 * (eps + scale);
 }
 
+/* Largest accepted |coordinate|: squared distances between such points stay finite. */
+#define FL_SWEEP_MAX_COORD 1e150
+
+static inline int fl_sweep_coord_ok(double x)
+{
+    return fabs(x) <= FL_SWEEP_MAX_COORD; /* false for NaN and infinities too */
+}
+
 static inline int fl_sweep_is_leaf(const fl_sweep_node *node)
 {
     return node->child[0] == FL_SWEEP_LEAF;
@@ -65,7 +73,8 @@ static inline double fl_sweep_query_slack(const fl_sweep *s, const double *q3)
     return 64 * 2.220446049250313e-16 * (s->scale + m);
 }
 
-/* Lifts a query of dimension s->dim to 3D (z = 0 for 2D); 0 if it is not finite. */
+/* Lifts a query of dimension s->dim to 3D (z = 0 for 2D); 0 if a coordinate is not finite or
+ * exceeds FL_SWEEP_MAX_COORD. */
 int fl_sweep_lift_query(const fl_sweep *s, const double *q, double *q3);
 
 /* Allocates the sweep and its node array (2 * elements - 1 nodes). */

@@ -397,6 +397,8 @@ static void test_sweep_rejects_bad_meshes(void)
     tri[2] = 2;
     xyz[4] = NAN;
     CHECK_STATUS(fl_sweep_build(&m, NULL, &s, &err), FL_ERR_INPUT, &err);
+    xyz[4] = 1e200;
+    CHECK_STATUS(fl_sweep_build(&m, NULL, &s, &err), FL_ERR_INPUT, &err);
     xyz[4] = 0;
     m.triangle_count = 0;
     CHECK_STATUS(fl_sweep_build(&m, NULL, &s, &err), FL_ERR_INPUT, &err);
@@ -406,6 +408,11 @@ static void test_sweep_rejects_bad_meshes(void)
     double q[3] = {0, NAN, 0};
     fl_closest r;
     CHECK_STATUS(fl_sweep_closest(s, q, 1, 0, &r, &err), FL_ERR_USAGE, &err);
+    q[1] = -1e151;
+    CHECK_STATUS(fl_sweep_closest(s, q, 1, 0, &r, &err), FL_ERR_USAGE, &err);
+    q[1] = 1e150; /* the largest accepted: distances stay finite */
+    CHECK_STATUS(fl_sweep_closest(s, q, 1, 0, &r, &err), FL_OK, &err);
+    CHECK(r.exact && r.distance == 1e150);
     q[1] = 0;
     CHECK_STATUS(fl_sweep_closest(s, q, 1, -1, &r, &err), FL_ERR_USAGE, &err);
     fl_sweep_free(s);

@@ -716,11 +716,11 @@ void fl_sweep_free(fl_sweep *sweep);
 int fl_sweep_dim(const fl_sweep *sweep);
 size_t fl_sweep_element_count(const fl_sweep *sweep);
 
-/* Answers nq queries (q holds nq*dim finite doubles, |x| <= 1e150, dim = fl_sweep_dim) into results[nq].
- * tolerance = 0 asks for exact answers; tolerance > 0 lets each query stop once its interval
- * is narrower (see fl_closest). The batch runs through one cursor (below), so queries ordered
- * along a path are much faster (§3.3, §5.1). FL_ERR_USAGE for bad arguments or a
- * non-finite query (results before it are filled), FL_ERR_NOMEM. */
+/* Answers nq queries (q holds nq*dim finite doubles, |x| <= 1e150, dim = fl_sweep_dim) into
+ * results[nq]. tolerance = 0 asks for exact answers; tolerance > 0 lets each query stop once
+ * its interval is narrower (see fl_closest). The batch runs through one cursor (below), so
+ * queries ordered along a path are much faster (§3.3, §5.1). FL_ERR_USAGE for bad arguments or
+ * a bad query (results before it are filled), FL_ERR_NOMEM. */
 fl_status fl_sweep_closest(const fl_sweep *sweep, const double *q, size_t nq, double tolerance,
                            fl_closest *results, fl_error *err);
 

@@ -702,10 +702,11 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
                          fl_error *err);
 
 /* Builds the hierarchy over a polyline of n points of dimension dim (2 or 3), coordinates
- * interleaved in `points` (n*dim finite doubles, |x| <= 1e150). Open (closed = 0): n-1 segments, n >= 2;
- * closed: n segments (the last joins point n-1 to point 0), n >= 2. Repeated points are fine.
- * The hierarchy is the iterative end-point fit of §3.1; its cost is O(n log n) for typical
- * curves and O(n^2) at worst (e.g. a spiral). Same errors as fl_sweep_build. */
+ * interleaved in `points` (n*dim finite doubles, |x| <= 1e150). Open (closed = 0): n-1
+ * segments, n >= 2; closed: n segments (the last joins point n-1 to point 0), n >= 2. Repeated
+ * points are fine. The hierarchy is the iterative end-point fit of §3.1; its cost is
+ * O(n log n) for typical curves and O(n^2) at worst (e.g. a spiral). Same errors as
+ * fl_sweep_build. */
 fl_status fl_sweep_polyline_build(const double *points, size_t n, int dim, int closed,
                                   const fl_sweep_options *opt, fl_sweep **out, fl_error *err);
 

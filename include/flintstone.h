@@ -939,6 +939,125 @@ fl_status fl_hal2_intersect(const fl_hal2 *a, const fl_hal2 *b, int first_only, 
 
 /* end of hal */
 
+/* ==== sweep ============================================================================== */
+/* (section owned by src/sweep; docs/sweep.md)
+ *
+ * Meshsweeper closest-point queries (Guéziec 2001). A hierarchy of bounding elements, each a
+ * segment (polylines, §3.1) or a triangle (meshes, §4.1) swept by a sphere of radius ε, is
+ * searched by a priority process on distance intervals [d - ε, d + ε] (§3.2). A query returns
+ * the exact closest point, or stops early with an interval [lower, upper] that brackets the
+ * distance once it is narrower than a tolerance. A hierarchy is immutable after building and
+ * may be queried from several threads at once; a cursor (for coherent query streams) belongs
+ * to one thread. */
+
+/* An opaque, immutable search hierarchy over the elements (segments or triangles) of a shape. */
+typedef struct fl_sweep fl_sweep;
+
+/* Build options; all zero is the default. */
+typedef struct fl_sweep_options {
+    fl_progress_fn progress; /* may be NULL */
+    void *progress_user;
+} fl_sweep_options;
+
+/* "No element", e.g. for an early-stopped query that has not yet reached one. */
+#define FL_SWEEP_NONE UINT32_MAX
+
+/* The answer to one closest-point query.
+ *  - exact = 1: `distance` is the distance from the query to the shape (lower = upper =
+ *    distance), `point` the closest point, `element` the segment or triangle containing it
+ *    (among equidistant elements, any one) and `bary` its barycentric coordinates there:
+ *    triangle t = (v0, v1, v2) gives point = bary[0] v0 + bary[1] v1 + bary[2] v2; polyline
+ *    segment i runs from point i to point i+1 (point 0 for the closing segment of a closed
+ *    polyline) and point = bary[0] p_i + bary[1] p_i+1, bary[2] = 0. 2D polylines give z = 0.
+ *  - exact = 0 (only with a tolerance > 0): the true distance lies in [lower, upper] and
+ *    upper - lower <= tolerance; `distance` is the midpoint. element/point/bary describe the
+ *    nearest element evaluated so far (element = FL_SWEEP_NONE and point NaN if none).
+ *  - reused = 1 when the query was answered in constant time from the previous query's
+ *    coherence ball (§3.3); `visited` counts the hierarchy nodes whose distance was computed. */
+typedef struct fl_closest {
+    double distance;
+    double point[3];
+    uint32_t element;
+    double bary[3];
+    double lower, upper;
+    int exact;
+    int reused;
+    size_t visited;
+} fl_closest;
+
+/* Builds the hierarchy over the triangles of `mesh` (any topology: open, non-manifold,
+ * degenerate or repeated triangles and duplicate vertices are fine). Every vertex coordinate
+ * must be finite with |x| <= 1e150 (so squared distances cannot overflow; queries too) and
+ * every index < vertex_count; at least one triangle, fewer than 2^31.
+ * opt may be NULL. Cost O(T log T) time, about 240 bytes a triangle. On failure *out is NULL;
+ * FL_ERR_USAGE for NULL arguments, FL_ERR_INPUT for bad meshes, FL_ERR_NOMEM. Free with
+ * fl_sweep_free. */
+fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sweep **out,
+                         fl_error *err);
+
+/* Builds the hierarchy over a polyline of n points of dimension dim (2 or 3), coordinates
+ * interleaved in `points` (n*dim finite doubles, |x| <= 1e150). Open (closed = 0): n-1
+ * segments, n >= 2; closed: n segments (the last joins point n-1 to point 0), n >= 2. Repeated
+ * points are fine. The hierarchy is the iterative end-point fit of §3.1; its cost is
+ * O(n log n) for typical curves and O(n^2) at worst (e.g. a spiral). Same errors as
+ * fl_sweep_build. */
+fl_status fl_sweep_polyline_build(const double *points, size_t n, int dim, int closed,
+                                  const fl_sweep_options *opt, fl_sweep **out, fl_error *err);
+
+/* Releases a hierarchy; NULL is a no-op. */
+void fl_sweep_free(fl_sweep *sweep);
+
+/* Dimension of the query points (2 for 2D polylines, 3 otherwise) and number of elements. */
+int fl_sweep_dim(const fl_sweep *sweep);
+size_t fl_sweep_element_count(const fl_sweep *sweep);
+
+/* Answers nq queries (q holds nq*dim finite doubles, |x| <= 1e150, dim = fl_sweep_dim) into
+ * results[nq]. tolerance = 0 asks for exact answers; tolerance > 0 lets each query stop once
+ * its interval is narrower (see fl_closest). The batch runs through one cursor (below), so
+ * queries ordered along a path are much faster (§3.3, §5.1). FL_ERR_USAGE for bad arguments or
+ * a bad query (results before it are filled), FL_ERR_NOMEM. */
+fl_status fl_sweep_closest(const fl_sweep *sweep, const double *q, size_t nq, double tolerance,
+                           fl_closest *results, fl_error *err);
+
+/* A streaming query state for query points that move a little at a time. It owns the
+ * priority queue (one array, sized once) and keeps it between queries: a move by δ widens
+ * every queued interval by δ and only the regions that reach the front are recomputed (§5.1);
+ * it also keeps the coherence ball of the last exact answer (§3.3). It starts over from the
+ * root by itself when a query jumps farther than the last distance or the kept queue stops
+ * paying, so any query order is correct. */
+typedef struct fl_sweep_cursor fl_sweep_cursor;
+
+/* Creates a cursor on `sweep`, which must outlive it. FL_ERR_USAGE, FL_ERR_NOMEM. */
+fl_status fl_sweep_cursor_new(const fl_sweep *sweep, fl_sweep_cursor **out, fl_error *err);
+
+/* One query (q holds dim doubles) as in fl_sweep_closest, reusing the previous answer when q
+ * lies inside its coherence ball. */
+fl_status fl_sweep_cursor_closest(fl_sweep_cursor *cursor, const double *q, double tolerance,
+                                  fl_closest *result, fl_error *err);
+
+/* Releases a cursor; NULL is a no-op. */
+void fl_sweep_cursor_free(fl_sweep_cursor *cursor);
+
+/* The k elements nearest to q (§4.4), nearest first: elements[i] and distances[i] for
+ * i < *found, *found = min(k, element count). Ties are ordered arbitrarily. */
+fl_status fl_sweep_knearest(const fl_sweep *sweep, const double *q, size_t k, uint32_t *elements,
+                            double *distances, size_t *found, fl_error *err);
+
+/* Elements at distance <= radius from q, nearest first (§4.4). Free with fl_sweep_hits_free. */
+typedef struct fl_sweep_hits {
+    size_t count;
+    uint32_t *element;
+    double *distance;
+} fl_sweep_hits;
+
+fl_status fl_sweep_within(const fl_sweep *sweep, const double *q, double radius,
+                          fl_sweep_hits *out, fl_error *err);
+
+void fl_sweep_hits_free(fl_sweep_hits *hits);
+
+/* end of sweep */
+
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,341 @@
+/* The mesh hierarchy: a binary tree over the triangles whose bounding volumes are triangles
+ * swept by spheres, the volume type of §4.1. Simplification (documented in docs/sweep.md):
+ * Guéziec obtains the hierarchy from error-bounded edge collapses and refines it by vertex
+ * splits (§4.2); here it is built top-down by median splits of the triangle centroids, and
+ * each internal node gets its own bounding triangle: a triangle in the principal plane of the
+ * node's vertices enclosing their projection, with ε = the largest distance of a vertex to it.
+ * The swept volume is convex, so containing the vertices it contains their triangles, and the
+ * priority process of §3.2 runs on it unchanged. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "core/core.h"
+#include "sweep/sweep_internal.h"
+
+typedef struct range {
+    size_t start, end; /* triangles perm[start..end) */
+    uint32_t node;
+} range;
+
+/* Eigenvectors (columns of vec) of the symmetric 3x3 matrix a by cyclic Jacobi rotations;
+ * the eigenvalues are left on a's diagonal. */
+static void jacobi3(double a[3][3], double vec[3][3])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            vec[i][j] = i == j;
+    for (int sweep = 0; sweep < 32; sweep++) {
+        double off = fabs(a[0][1]) + fabs(a[0][2]) + fabs(a[1][2]);
+        double diag = fabs(a[0][0]) + fabs(a[1][1]) + fabs(a[2][2]);
+        if (!(off > 1e-15 * diag)) return;
+        for (int p = 0; p < 2; p++)
+            for (int q = p + 1; q < 3; q++) {
+                if (a[p][q] == 0) continue;
+                double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+                double t = (theta >= 0 ? 1 : -1) / (fabs(theta) + sqrt(theta * theta + 1));
+                double c = 1 / sqrt(t * t + 1), s = t * c;
+                for (int k = 0; k < 3; k++) { /* a = a J */
+                    double akp = a[k][p], akq = a[k][q];
+                    a[k][p] = c * akp - s * akq;
+                    a[k][q] = s * akp + c * akq;
+                }
+                for (int k = 0; k < 3; k++) { /* a = J^T a */
+                    double apk = a[p][k], aqk = a[q][k];
+                    a[p][k] = c * apk - s * aqk;
+                    a[q][k] = s * apk + c * aqk;
+                }
+                for (int k = 0; k < 3; k++) {
+                    double vkp = vec[k][p], vkq = vec[k][q];
+                    vec[k][p] = c * vkp - s * vkq;
+                    vec[k][q] = s * vkp + c * vkq;
+                }
+            }
+    }
+}
+
+/* The principal frame of the vertices of triangles perm[start..end): mean and axes e[0], e[1]
+ * (largest spread first) and the normal e[2]. */
+static void principal_frame(const fl_mesh *m, const uint32_t *perm, size_t start, size_t end,
+                            double *mean, double e[3][3])
+{
+    double sum[3] = {0, 0, 0}, cov[3][3] = {{0}};
+    size_t count = 3 * (end - start);
+    for (size_t i = start; i < end; i++)
+        for (int k = 0; k < 3; k++)
+            for (int c = 0; c < 3; c++)
+                sum[c] += m->xyz[3 * (size_t)m->tri[3 * (size_t)perm[i] + k] + c];
+    for (int c = 0; c < 3; c++)
+        mean[c] = sum[c] / (double)count;
+    for (size_t i = start; i < end; i++)
+        for (int k = 0; k < 3; k++) {
+            const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
+            for (int r = 0; r < 3; r++)
+                for (int c = 0; c < 3; c++)
+                    cov[r][c] += (p[r] - mean[r]) * (p[c] - mean[c]);
+        }
+    double vec[3][3];
+    jacobi3(cov, vec);
+    int order[3] = {0, 1, 2};
+    for (int i = 0; i < 3; i++) /* sort eigenvalues decreasing */
+        for (int j = i + 1; j < 3; j++)
+            if (cov[order[j]][order[j]] > cov[order[i]][order[i]]) {
+                int t = order[i];
+                order[i] = order[j];
+                order[j] = t;
+            }
+    for (int i = 0; i < 3; i++)
+        for (int c = 0; c < 3; c++)
+            e[i][c] = vec[c][order[i]];
+}
+
+/* The node's vertex nearest to the mean of its vertices: a point of the shape inside the
+ * element, whose distance bounds the distance to the node's triangles from above. */
+static void representative(const fl_mesh *m, const uint32_t *perm, size_t start, size_t end,
+                           const double *mean, double *rep)
+{
+    double best = INFINITY;
+    for (size_t i = start; i < end; i++)
+        for (int k = 0; k < 3; k++) {
+            const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
+            double d = (p[0] - mean[0]) * (p[0] - mean[0]) + (p[1] - mean[1]) * (p[1] - mean[1]) +
+                       (p[2] - mean[2]) * (p[2] - mean[2]);
+            if (d < best) {
+                best = d;
+                rep[0] = p[0], rep[1] = p[1], rep[2] = p[2];
+            }
+        }
+}
+
+/* A triangle enclosing the 2D points uv[0..n): over the four sides of their bounding box as
+ * base and three side slopes around the one that gives area 2wh for a rectangle, the
+ * smallest of the triangles whose two sides touch the points. Writes the corners to tri. */
+static void enclosing_triangle(const double *uv, size_t n, const double *lo, const double *hi,
+                               double tri[3][2])
+{
+    static const int axis[4][2] = {{0, 1}, {0, 1}, {1, 0}, {1, 0}}; /* (x, y) from (u, v) */
+    static const double flip[4] = {1, -1, 1, -1};
+    double best = INFINITY;
+    for (int o = 0; o < 4; o++) {
+        int ax = axis[o][0], ay = axis[o][1];
+        double w = hi[ax] - lo[ax], h = hi[ay] - lo[ay];
+        double y0 = flip[o] > 0 ? lo[ay] : -hi[ay];
+        double s0 = w > 0 && h > 0 ? 2 * h / w : 1;
+        for (int k = 0; k < 3; k++) {
+            double slope = s0 * (k == 0 ? 0.5 : k == 1 ? 1 : 2), left = INFINITY, right = -INFINITY;
+            for (size_t i = 0; i < n; i++) {
+                double x = uv[2 * i + ax], y = flip[o] * uv[2 * i + ay] - y0;
+                left = fmin(left, x - y / slope);
+                right = fmax(right, x + y / slope);
+            }
+            double area = slope * (right - left) * (right - left);
+            if (!(area < best)) continue;
+            best = area;
+            double corner[3][2] = {
+                {left, 0}, {right, 0}, {(left + right) / 2, slope * (right - left) / 2}};
+            for (int c = 0; c < 3; c++) {
+                tri[c][ax] = corner[c][0];
+                tri[c][ay] = flip[o] * (corner[c][1] + y0);
+            }
+        }
+    }
+}
+
+/* The bounding element of a node: a triangle in the principal plane of the node's vertices
+ * (at the mid-plane of their spread along the normal) enclosing their projections, and ε =
+ * the farthest vertex from it. uv is scratch room for 6 doubles a triangle. */
+static void bounding_triangle(const fl_mesh *m, const uint32_t *perm, size_t start, size_t end,
+                              double scale, double *uv, fl_sweep_node *node)
+{
+    double mean[3], e[3][3], lo[3] = {INFINITY, INFINITY, INFINITY};
+    double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    principal_frame(m, perm, start, end, mean, e);
+    size_t n = 0;
+    for (size_t i = start; i < end; i++)
+        for (int k = 0; k < 3; k++, n++) {
+            const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
+            for (int a = 0; a < 3; a++) {
+                double x = (p[0] - mean[0]) * e[a][0] + (p[1] - mean[1]) * e[a][1] +
+                           (p[2] - mean[2]) * e[a][2];
+                if (a < 2) uv[2 * n + a] = x;
+                lo[a] = fmin(lo[a], x);
+                hi[a] = fmax(hi[a], x);
+            }
+        }
+    double corner[3][2], mid_n = (lo[2] + hi[2]) / 2;
+    enclosing_triangle(uv, n, lo, hi, corner);
+    for (int k = 0; k < 3; k++)
+        for (int c = 0; c < 3; c++)
+            node->v[3 * k + c] =
+                mean[c] + corner[k][0] * e[0][c] + corner[k][1] * e[1][c] + mid_n * e[2][c];
+    /* Measured, not derived from the frame, so rounding in the frame cannot shrink it. */
+    double eps2 = 0, bary[3], closest[3];
+    for (size_t i = start; i < end; i++)
+        for (int k = 0; k < 3; k++) {
+            const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
+            eps2 = fmax(eps2, fl_sweep_triangle_closest(p, node->v, node->v + 3, node->v + 6, bary,
+                                                        closest));
+        }
+    node->eps = fl_sweep_widen(sqrt(eps2), scale);
+    representative(m, perm, start, end, mean, node->rep);
+}
+
+/* Reorders perm[start..end) so that perm[mid] has the median key and smaller keys precede
+ * it (Hoare quickselect on the centroid coordinate `axis`). */
+static void select_median(uint32_t *perm, const double *centroid, int axis, size_t start,
+                          size_t mid, size_t end)
+{
+    size_t lo = start, hi = end - 1;
+    while (lo < hi) {
+        double pivot = centroid[3 * (size_t)perm[lo + (hi - lo) / 2] + axis];
+        size_t i = lo, j = hi;
+        while (i <= j) {
+            while (centroid[3 * (size_t)perm[i] + axis] < pivot)
+                i++;
+            while (centroid[3 * (size_t)perm[j] + axis] > pivot)
+                j--;
+            if (i <= j) {
+                uint32_t t = perm[i];
+                perm[i] = perm[j];
+                perm[j] = t;
+                i++;
+                if (j == 0) break;
+                j--;
+            }
+        }
+        if (mid <= j)
+            hi = j;
+        else if (mid >= i)
+            lo = i;
+        else
+            return;
+    }
+}
+
+static int widest_axis(const uint32_t *perm, const double *centroid, size_t start, size_t end)
+{
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = start; i < end; i++)
+        for (int c = 0; c < 3; c++) {
+            lo[c] = fmin(lo[c], centroid[3 * (size_t)perm[i] + c]);
+            hi[c] = fmax(hi[c], centroid[3 * (size_t)perm[i] + c]);
+        }
+    int axis = 0;
+    for (int c = 1; c < 3; c++)
+        if (hi[c] - lo[c] > hi[axis] - lo[axis]) axis = c;
+    return axis;
+}
+
+static void set_leaf(const fl_mesh *m, uint32_t t, fl_sweep_node *node)
+{
+    for (int k = 0; k < 3; k++)
+        for (int c = 0; c < 3; c++)
+            node->v[3 * k + c] = m->xyz[3 * (size_t)m->tri[3 * (size_t)t + k] + c];
+    node->eps = 0;
+    node->child[0] = node->child[1] = FL_SWEEP_LEAF;
+    node->element = t;
+}
+
+static fl_status check_mesh(const fl_mesh *m, fl_error *err)
+{
+    if (!m || (m->triangle_count > 0 && !m->tri) || (m->vertex_count > 0 && !m->xyz))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "mesh or its arrays are NULL");
+    if (m->triangle_count == 0)
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "the mesh has no triangles");
+    if (m->triangle_count >= (size_t)1 << 31)
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "too many triangles (%zu)", m->triangle_count);
+    for (size_t v = 0; v < m->vertex_count; v++)
+        for (int c = 0; c < 3; c++)
+            if (!fl_sweep_coord_ok(m->xyz[3 * v + c]))
+                return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                               "vertex %zu is not finite or beyond 1e150", v);
+    for (size_t t = 0; t < m->triangle_count; t++)
+        for (int k = 0; k < 3; k++)
+            if (m->tri[3 * t + k] >= m->vertex_count)
+                return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                               "triangle %zu refers to vertex %u, but there are %zu vertices", t,
+                               m->tri[3 * t + k], m->vertex_count);
+    return FL_OK;
+}
+
+/* Splits triangle ranges top-down; nodes are numbered in creation order, root first. */
+static fl_status split_ranges(fl_sweep *s, const fl_mesh *m, uint32_t *perm, const double *centroid,
+                              const fl_sweep_options *opt, fl_error *err)
+{
+    range *stack = fl_alloc_array(s->node_count, sizeof *stack);
+    double *uv = fl_alloc_array(s->elements, 6 * sizeof *uv);
+    if (!stack || !uv) {
+        free(stack);
+        free(uv);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
+    }
+    size_t top = 0, next = 1, done = 0;
+    stack[top++] = (range){0, s->elements, 0};
+    while (top > 0) {
+        range r = stack[--top];
+        fl_sweep_node *node = s->nodes + r.node;
+        if (r.end - r.start == 1) {
+            set_leaf(m, perm[r.start], node);
+            if ((++done & 0xffff) == 0 && opt &&
+                fl_progress(opt->progress, opt->progress_user, "sweep hierarchy",
+                            (double)done / (double)s->elements)) {
+                free(stack);
+                free(uv);
+                return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+            }
+            continue;
+        }
+        bounding_triangle(m, perm, r.start, r.end, s->scale, uv, node);
+        size_t mid = r.start + (r.end - r.start) / 2;
+        select_median(perm, centroid, widest_axis(perm, centroid, r.start, r.end), r.start, mid,
+                      r.end);
+        node->element = FL_SWEEP_LEAF;
+        node->child[0] = (uint32_t)next;
+        node->child[1] = (uint32_t)(next + 1);
+        stack[top++] = (range){r.start, mid, (uint32_t)next};
+        stack[top++] = (range){mid, r.end, (uint32_t)(next + 1)};
+        next += 2;
+    }
+    free(stack);
+    free(uv);
+    return FL_OK;
+}
+
+fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sweep **out,
+                         fl_error *err)
+{
+    if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "output pointer is NULL");
+    *out = NULL;
+    fl_status st = check_mesh(mesh, err);
+    if (st != FL_OK) return st;
+    size_t n = mesh->triangle_count;
+    uint32_t *perm = fl_alloc_array(n, sizeof *perm);
+    double *centroid = fl_alloc_array(n, 3 * sizeof *centroid);
+    fl_sweep *s = NULL;
+    if (!perm || !centroid) {
+        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
+    } else {
+        st = fl_sweep_alloc(3, 1, n, &s, err);
+    }
+    if (st == FL_OK) {
+        for (size_t v = 0; v < 3 * mesh->vertex_count; v++)
+            s->scale = fmax(s->scale, fabs(mesh->xyz[v]));
+        for (size_t t = 0; t < n; t++) {
+            perm[t] = (uint32_t)t;
+            for (int c = 0; c < 3; c++) {
+                double sum = 0;
+                for (int k = 0; k < 3; k++)
+                    sum += mesh->xyz[3 * (size_t)mesh->tri[3 * t + k] + c];
+                centroid[3 * t + c] = sum / 3;
+            }
+        }
+        st = split_ranges(s, mesh, perm, centroid, opt, err);
+    }
+    free(perm);
+    free(centroid);
+    if (st != FL_OK) {
+        fl_sweep_free(s);
+        return st;
+    }
+    *out = s;
+    return FL_OK;
+}

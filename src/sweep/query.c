@@ -1,0 +1,253 @@
+/* Closest-point queries: the priority process of §3.2 on intervals [d - ε, d + ε] keyed by
+ * d - ε, shared by polylines and meshes (§4.2: "nothing else is changed in the priority
+ * structure"), with the early stop on a tolerance, the constant-time coherence ball of §3.3
+ * and the small-motion update of §5.1.
+ *
+ * The cursor keeps its queue between queries (§5.1). The queue always holds a cut of the
+ * hierarchy — regions that together cover the shape — so regions are never pruned, only left
+ * at the back. When the query point moves by δ every interval widens by δ on both sides; the
+ * priorities do not change, so instead of touching the queue the cursor adds δ to the distance
+ * it has travelled, and an entry's current lower bound is key - (travelled - base). An entry
+ * whose base is not the current travelled distance is "dirty": when it reaches the front its
+ * distance is recomputed. The first clean leaf at the front is the closest element.
+ *
+ * Rounding: lower bounds are lowered and upper bounds raised by a slack of 64 ulps of the
+ * largest coordinate involved, so rounding never lets a nearer region stay behind. */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "core/core.h"
+#include "sweep/sweep_heap.h"
+#include "sweep/sweep_internal.h"
+
+struct fl_sweep_cursor {
+    const fl_sweep *s;
+    fl_sweep_heap h;
+    double q[3];          /* the last query */
+    double travelled;     /* sum of the query's moves since the queue was reset (§5.1) */
+    size_t reset_cost;    /* distances computed by the last query that started from the root */
+    size_t last_cost;     /* distances computed by the last query */
+    double last_distance; /* the last query's distance (or interval midpoint) */
+    int started;          /* the queue holds a cut of the hierarchy */
+    int have_ball;        /* §3.3: the last exact answer's ball is valid */
+    double center[3];
+    double radius;
+    uint32_t leaf; /* the node that is closest anywhere inside the ball */
+};
+
+static void fill_leaf(const fl_sweep *s, uint32_t leaf, const double *q3, fl_closest *r)
+{
+    const fl_sweep_node *node = s->nodes + leaf;
+    r->distance = fl_sweep_node_distance(s, node, q3, r->bary, r->point);
+    r->element = node->element;
+    r->lower = r->upper = r->distance;
+    r->exact = 1;
+}
+
+/* The state of one query. */
+typedef struct search {
+    double upper; /* best upper bound computed in this query (§3.2) */
+    uint32_t best_leaf;
+    double best_leaf_d;
+    double slack;
+    size_t visited;
+} search;
+
+/* An upper bound on the distance from q to the shape inside a region. §3.1's d + ε needs the
+ * base element to lie within ε of the shape as well, which the end-point fit guarantees (the
+ * curve crosses every plane normal to the segment inside the capsule's ε-disc). Our mesh
+ * elements only bound the shape one way (their triangles overhang it), so a mesh region
+ * uses the distance to a vertex of the shape inside it instead. */
+static double upper_bound(const fl_sweep *s, const fl_sweep_node *node, const double *q3, double d,
+                          double slack)
+{
+    if (!s->triangles) return d + node->eps + slack;
+    double r2 = 0;
+    for (int c = 0; c < 3; c++)
+        r2 += (q3[c] - node->rep[c]) * (q3[c] - node->rep[c]);
+    return sqrt(r2) + slack;
+}
+
+/* Computes a region's interval at the current query and queues it (clean). */
+static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t id)
+{
+    const fl_sweep *s = cur->s;
+    const fl_sweep_node *node = s->nodes + id;
+    double bary[3], c[3];
+    double d = fl_sweep_node_distance(s, node, q3, bary, c);
+    st->visited++;
+    double lo = d, hi = d;
+    if (!fl_sweep_is_leaf(node)) {
+        /* The key lo + travelled, and its difference with a later travelled, round at
+         * the scale of the travelled distance: widen for that too. */
+        lo = d - node->eps - st->slack - 16 * DBL_EPSILON * cur->travelled;
+        hi = upper_bound(s, node, q3, d, st->slack);
+    } else if (d < st->best_leaf_d) {
+        st->best_leaf_d = d;
+        st->best_leaf = id;
+    }
+    if (hi < st->upper) st->upper = hi;
+    fl_sweep_heap_push(&cur->h, (fl_sweep_entry){lo + cur->travelled, cur->travelled, id});
+}
+
+/* The current lower bound of a queued region (§5.1: widened by the moves since its base). */
+static double current_lower(const fl_sweep_cursor *cur, const fl_sweep_entry *e)
+{
+    return e->key - cur->travelled;
+}
+
+/* §3.3: no other region can come nearer than the second interval's lower end, so within half
+ * the gap the answer keeps its element. The second smallest key of a heap is at 1 or 2. */
+static void set_ball(fl_sweep_cursor *cur, const search *st, const double *q3, uint32_t leaf,
+                     double d)
+{
+    double second = INFINITY;
+    for (size_t i = 1; i <= 2 && i < cur->h.n; i++)
+        second = fmin(second, current_lower(cur, cur->h.e + i));
+    double r = (second - d) / 2 - st->slack;
+    cur->have_ball = r > 0;
+    cur->radius = r;
+    cur->leaf = leaf;
+    for (int c = 0; c < 3; c++)
+        cur->center[c] = q3[c];
+}
+
+static void approximate(const fl_sweep *s, const search *st, double lower, const double *q3,
+                        fl_closest *r)
+{
+    if (st->best_leaf != FL_SWEEP_LEAF) {
+        fill_leaf(s, st->best_leaf, q3, r);
+    } else {
+        r->element = FL_SWEEP_NONE;
+        for (int c = 0; c < 3; c++)
+            r->point[c] = r->bary[c] = NAN;
+    }
+    r->lower = lower > 0 ? lower : 0;
+    r->upper = st->upper;
+    r->distance = (r->lower + r->upper) / 2;
+    r->exact = 0;
+}
+
+/* Starts over from the root ("the mesh is substituted with the base mesh", §4.2) when the
+ * kept queue is unlikely to pay: the query jumped farther than the last distance (so most of
+ * the queue would be dirty), the last query cost more than one from the root, or the queue
+ * has grown far beyond what a query from the root needs. Otherwise accounts the move (§5.1). */
+static void advance(fl_sweep_cursor *cur, const double *q3, search *st)
+{
+    double d2 = 0;
+    for (int c = 0; c < 3; c++)
+        d2 += (q3[c] - cur->q[c]) * (q3[c] - cur->q[c]);
+    int reset = !cur->started || sqrt(d2) > cur->last_distance ||
+                cur->last_cost > cur->reset_cost || cur->h.n > 8 * cur->reset_cost + 64;
+    cur->travelled = reset ? 0 : cur->travelled + sqrt(d2) + st->slack;
+    for (int c = 0; c < 3; c++)
+        cur->q[c] = q3[c];
+    if (!reset) return;
+    cur->h.n = 0;
+    cur->started = 1;
+    cur->reset_cost = SIZE_MAX;
+    visit(cur, st, q3, 0);
+}
+
+/* The priority process (§3.2) on the kept queue: refresh dirty fronts, split clean internal
+ * fronts; the first clean leaf at the front is the answer, or stop once the interval fits the
+ * tolerance. The answer stays queued for the next query. */
+static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_closest *r)
+{
+    const fl_sweep *s = cur->s;
+    search st = {INFINITY, FL_SWEEP_LEAF, INFINITY, fl_sweep_query_slack(s, q3), 0};
+    fl_sweep_heap *h = &cur->h;
+    cur->have_ball = 0;
+    advance(cur, q3, &st);
+    for (;;) {
+        fl_sweep_entry top = h->e[0];
+        const fl_sweep_node *node = s->nodes + top.node;
+        if (top.base != cur->travelled) {
+            fl_sweep_heap_pop(h);
+            visit(cur, &st, q3, top.node);
+            continue;
+        }
+        if (fl_sweep_is_leaf(node)) {
+            fill_leaf(s, top.node, q3, r);
+            set_ball(cur, &st, q3, top.node, r->distance);
+            break;
+        }
+        if (tol > 0 && st.upper - current_lower(cur, &top) <= tol) {
+            approximate(s, &st, current_lower(cur, &top), q3, r);
+            break;
+        }
+        fl_sweep_heap_pop(h);
+        visit(cur, &st, q3, node->child[0]);
+        visit(cur, &st, q3, node->child[1]);
+    }
+    if (cur->reset_cost == SIZE_MAX) cur->reset_cost = st.visited;
+    cur->last_cost = st.visited;
+    cur->last_distance = r->distance;
+    r->reused = 0;
+    r->visited = st.visited;
+}
+
+fl_status fl_sweep_cursor_new(const fl_sweep *sweep, fl_sweep_cursor **out, fl_error *err)
+{
+    if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "output pointer is NULL");
+    *out = NULL;
+    if (!sweep) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "sweep hierarchy is NULL");
+    fl_sweep_cursor *cur = calloc(1, sizeof *cur);
+    fl_sweep_entry *e = fl_alloc_array(sweep->node_count, sizeof *e);
+    if (!cur || !e) {
+        free(cur);
+        free(e);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a sweep cursor");
+    }
+    cur->s = sweep;
+    cur->h.e = e;
+    *out = cur;
+    return FL_OK;
+}
+
+void fl_sweep_cursor_free(fl_sweep_cursor *cursor)
+{
+    if (!cursor) return;
+    free(cursor->h.e);
+    free(cursor);
+}
+
+fl_status fl_sweep_cursor_closest(fl_sweep_cursor *cursor, const double *q, double tolerance,
+                                  fl_closest *result, fl_error *err)
+{
+    double q3[3];
+    if (!cursor || !q || !result)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and result must not be NULL");
+    if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
+    if (!fl_sweep_lift_query(cursor->s, q, q3))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
+    if (cursor->have_ball) {
+        double d2 = 0;
+        for (int c = 0; c < 3; c++)
+            d2 += (q3[c] - cursor->center[c]) * (q3[c] - cursor->center[c]);
+        if (sqrt(d2) < cursor->radius) {
+            fill_leaf(cursor->s, cursor->leaf, q3, result);
+            result->reused = 1;
+            result->visited = 1;
+            return FL_OK;
+        }
+    }
+    sweep_query(cursor, q3, tolerance, result);
+    return FL_OK;
+}
+
+fl_status fl_sweep_closest(const fl_sweep *sweep, const double *q, size_t nq, double tolerance,
+                           fl_closest *results, fl_error *err)
+{
+    if (nq == 0) return FL_OK;
+    if (!q || !results)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "queries and results must not be NULL");
+    fl_sweep_cursor *cur;
+    fl_status st = fl_sweep_cursor_new(sweep, &cur, err);
+    if (st != FL_OK) return st;
+    for (size_t i = 0; i < nq && st == FL_OK; i++)
+        st = fl_sweep_cursor_closest(cur, q + i * (size_t)sweep->dim, tolerance, results + i, err);
+    fl_sweep_cursor_free(cur);
+    return st;
+}

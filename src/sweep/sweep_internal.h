@@ -1,0 +1,83 @@
+/* Meshsweeper internals (Guéziec 2001): the hierarchy of swept-sphere bounding elements shared
+ * by the polyline (§3) and mesh (§4) builders and the priority-process queries. */
+#ifndef FL_SWEEP_INTERNAL_H
+#define FL_SWEEP_INTERNAL_H
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "flintstone.h"
+
+#define FL_SWEEP_LEAF UINT32_MAX
+
+/* One bounding element: the points within `eps` of a segment (v[0..5]) or a triangle
+ * (v[0..8]), §3.1 / §4.1. A leaf is an input element itself (eps = 0). `rep` is a point of
+ * the shape inside the element (meshes only; see query.c for why). */
+typedef struct fl_sweep_node {
+    double v[9];
+    double rep[3];
+    double eps;
+    uint32_t child[2]; /* internal: both children; leaf: child[0] = FL_SWEEP_LEAF */
+    uint32_t element;  /* leaf: the input segment / triangle index */
+} fl_sweep_node;
+
+struct fl_sweep {
+    int dim;         /* of the query points: 2 or 3 */
+    int triangles;   /* 1: nodes are triangles; 0: segments */
+    size_t elements; /* input elements (leaves) */
+    size_t node_count;
+    fl_sweep_node *nodes; /* nodes[0] is the root */
+    double scale;         /* largest |coordinate| of the input, for rounding slack */
+};
+
+/* Closest point on segment ab to p; *t in [0,1] is its parameter. Returns the squared
+ * distance. Handles a = b. */
+double fl_sweep_segment_closest(const double *p, const double *a, const double *b, double *t,
+                                double *closest);
+
+/* Closest point on triangle abc to p with its barycentric coordinates (bary sums to 1).
+ * Returns the squared distance. Handles degenerate (collinear, repeated-vertex) triangles. */
+double fl_sweep_triangle_closest(const double *p, const double *a, const double *b, const double *c,
+                                 double *bary, double *closest);
+
+/* Distance from p to the base element of a node, with its closest point and barycentrics. */
+double fl_sweep_node_distance(const fl_sweep *s, const fl_sweep_node *node, const double *p,
+                              double *bary, double *closest);
+
+/* A bounding radius widened by the rounding error of the distances it was measured with (a
+ * few ulps of the largest coordinate), so the volume contains its points for certain. */
+static inline double fl_sweep_widen(double eps, double scale)
+{
+    return eps + 64 * 2.220446049250313e-16 * (eps + scale);
+}
+
+/* Largest accepted |coordinate|: squared distances between such points stay finite. */
+#define FL_SWEEP_MAX_COORD 1e150
+
+static inline int fl_sweep_coord_ok(double x)
+{
+    return fabs(x) <= FL_SWEEP_MAX_COORD; /* false for NaN and infinities too */
+}
+
+static inline int fl_sweep_is_leaf(const fl_sweep_node *node)
+{
+    return node->child[0] == FL_SWEEP_LEAF;
+}
+
+/* The rounding slack of the distances from q3 (64 ulps of the largest coordinate involved):
+ * query bounds are widened by it so that no region is misjudged because of rounding. */
+static inline double fl_sweep_query_slack(const fl_sweep *s, const double *q3)
+{
+    double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
+    return 64 * 2.220446049250313e-16 * (s->scale + m);
+}
+
+/* Lifts a query of dimension s->dim to 3D (z = 0 for 2D); 0 if a coordinate is not finite or
+ * exceeds FL_SWEEP_MAX_COORD. */
+int fl_sweep_lift_query(const fl_sweep *s, const double *q, double *q3);
+
+/* Allocates the sweep and its node array (2 * elements - 1 nodes). */
+fl_status fl_sweep_alloc(int dim, int triangles, size_t elements, fl_sweep **out, fl_error *err);
+
+#endif /* FL_SWEEP_INTERNAL_H */

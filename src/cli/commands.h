@@ -11,5 +11,6 @@ int cmd_reconstruct(int argc, char **argv);
 int cmd_hal(int argc, char **argv);
 int cmd_inside(int argc, char **argv);
 int cmd_intersect(int argc, char **argv);
+int cmd_closest(int argc, char **argv);
 
 #endif

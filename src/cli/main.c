@@ -18,6 +18,7 @@ static const cli_command commands[] = {
     {"hal", "flintstone tree of a polygon: approximation by level or certified error", cmd_hal},
     {"inside", "point inclusion in a polygon through its flintstone tree", cmd_inside},
     {"intersect", "do two polygons' boundaries intersect (flintstone trees)", cmd_intersect},
+    {"closest", "closest points on a mesh or polyline (Meshsweeper hierarchy)", cmd_closest},
     {"version", "print the version", cmd_version},
 };
 

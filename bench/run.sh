@@ -16,7 +16,7 @@ build=${FL_BENCH_BUILD:-$root/build-bench}
 # Debian packages the bench needs: the build, the peers, node for the data conversion. Node and
 # npm are looked for as commands, since some machines have them from another nodejs package
 # that bundles npm.
-packages=(gcc make cmake libassimp-dev)
+packages=(gcc g++ make cmake libassimp-dev libcgal-dev qhull-bin tetgen)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -75,6 +75,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
   echo "- machine: $cpu, $(nproc) cores, $(free -g | awk '/^Mem:/ {print $2}') GiB, $(uname -sr); shared with other jobs"
   echo "- compiler: $(cc --version | head -1); flintstone built CMAKE_BUILD_TYPE=Release"
   echo "- peer: assimp $(dpkg-query -W -f='${Version}' libassimp-dev) (Debian libassimp-dev)"
+  echo "- peers (Delaunay): CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) (libcgal-dev, g++ -O2 -DNDEBUG), qhull $(dpkg-query -W -f='${Version}' qhull-bin) (qhull-bin), TetGen $(dpkg-query -W -f='${Version}' tetgen) (tetgen)"
   echo
   echo "| workload | ours (s) | peer | peer (s) | ratio ours/peer | notes |"
   echo "|---|---:|---|---:|---:|---|"

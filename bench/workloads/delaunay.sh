@@ -82,9 +82,9 @@ run_peer() {
   PEER_RSS_MB=$(mb "$(sed -n 's/^TIME .*maxrss=//p' <<<"$out")")
 }
 
-# qhull WORKLOAD PREFIX ROUNDS: `qdelaunay Qt s TI PREFIX.qh`; Qt triangulates non-simplicial
+# qhull_row WORKLOAD PREFIX ROUNDS: `qdelaunay Qt s TI PREFIX.qh`; Qt triangulates non-simplicial
 # regions, s prints the summary with qhull's own CPU time of the computation after reading.
-qhull() {
+qhull_row() {
   local workload=$1 file=$2.qh rounds=$3
   [ -n "${OURS_CPU:-}" ] || return 0
   if ! run_peer "$rounds" 's/.*CPU seconds to compute hull (after input): *//p' \
@@ -115,7 +115,7 @@ tetgen_row() {
 all_peers() {
   OURS_CPU=""
   compare_cgal "$1" "$2" "$3" "$4" "$5" "$6"
-  [ "$7" = 1 ] && qhull "$1" "$3" "$4"
+  [ "$7" = 1 ] && qhull_row "$1" "$3" "$4"
   [ "$8" = 1 ] && tetgen_row "$1" "$3" "$4" $([ "$2" = rt3 ] && echo -w)
   return 0
 }

@@ -6,7 +6,8 @@
 # compute time they report themselves.
 #
 # Environment besides lib.sh's: BENCH_ROUNDS_BIG / BENCH_REPS_BIG (default 1 / 1) replace
-# BENCH_ROUNDS / BENCH_REPS for the 1e6-point inputs, which take minutes on a loaded machine;
+# BENCH_ROUNDS / BENCH_REPS for the 1e6-point 3D inputs, which take minutes on a loaded machine
+# (the 2D one takes a second and gets the full rounds);
 # BENCH_SMALL_REPS (default 21) is BENCH_REPS for the real point sets of a few thousand points;
 # BENCH_QHULL_BIG=0 skips qhull on the 1e6-point 3D inputs (about 2 GB and a minute of CPU).
 set -euo pipefail
@@ -124,7 +125,7 @@ R=$BENCH_ROUNDS
 N=$BENCH_REPS
 all_peers dt2_uniform_1e5 dt2 "$(points uniform2 100000 1 u2-1e5)" "$R" "$N" \
   "100 000 uniform random points in the unit square" 1 0
-all_peers dt2_uniform_1e6 dt2 "$(points uniform2 1000000 2 u2-1e6)" "$BIG_ROUNDS" "$BIG_REPS" \
+all_peers dt2_uniform_1e6 dt2 "$(points uniform2 1000000 2 u2-1e6)" "$R" "$N" \
   "1 000 000 uniform random points in the unit square" 1 0
 all_peers dt3_uniform_1e5 dt3 "$(points uniform3 100000 3 u3-1e5)" "$R" "$N" \
   "100 000 uniform random points in the unit cube" 1 1

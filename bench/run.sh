@@ -92,7 +92,8 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
     else               printf "- %s: ours and %s are on par (ratio %.2f)\n", $2, $4, r
   }' "$rows"
   echo
-  echo "Where the time goes when we are slower: see \"Findings\" in docs/benchmarks.md."
+  echo "Where the time goes when we are slower: see \"Findings\" in docs/benchmarks.md (readers) and"
+  echo "\"Benchmark\" in docs/delaunay.md (Delaunay: method, what each figure is, profiles)."
 } >"$results"
 echo "run: wrote $results" >&2
 cat "$results"

@@ -5,8 +5,9 @@
 #   BENCH_REPS   timed runs per process (default 5), BENCH_ROUNDS processes per side (default 3)
 #
 # A workload prints one line per comparison, fields separated by '|':
-#   ROW|<workload>|<ours seconds>|<peer name>|<peer seconds>|<notes>
-# run.sh turns the rows into the table of bench/RESULTS.md, ratio = ours / peer.
+#   ROW|<workload>|<ours seconds>|<peer name>|<peer seconds>|<CPU-time ratio or ->|<notes>
+# (seconds are wall time) or ERROR|<workload>|<why>. run.sh turns the rows into the table of
+# bench/RESULTS.md, ratio = ours / peer.
 
 BENCH_REPS=${BENCH_REPS:-5}
 BENCH_ROUNDS=${BENCH_ROUNDS:-3}
@@ -44,9 +45,9 @@ compare_readers() {
   mb_p=$(( $(field maxrss_kb "$p_line") / 1024 ))
   cpu_ratio=$(awk -v o="$(median <<<"${o_cpu%$'\n'}")" -v p="$(median <<<"${p_cpu%$'\n'}")" \
     'BEGIN {printf "%.2f", o / p}')
-  printf 'ROW|%s|%s|%s|%s|%s; CPU-time ratio %s; built V=%s T=%s (ours), V=%s T=%s (peer); peak RSS %s MB / %s MB\n' \
+  printf 'ROW|%s|%s|%s|%s|%s|%s; built V=%s T=%s (ours), V=%s T=%s (peer); peak RSS %s MB / %s MB\n' \
     "$workload" "$(median <<<"${o_times%$'\n'}")" "$(field reader "$p_line")" \
-    "$(median <<<"${p_times%$'\n'}")" "$notes" "$cpu_ratio" \
+    "$(median <<<"${p_times%$'\n'}")" "$cpu_ratio" "$notes" \
     "$(field vertices "$o_line")" "$(field triangles "$o_line")" \
     "$(field vertices "$p_line")" "$(field triangles "$p_line")" "$mb_o" "$mb_p"
 }

@@ -51,6 +51,7 @@ else
   results=$bench/RESULTS.md
 fi
 
+load_start=$(cut -d' ' -f1-3 /proc/loadavg)
 rows=$bench/out/rows.txt
 : >"$rows"
 for w in "${workloads[@]}"; do
@@ -68,28 +69,31 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
   echo "Written by \`bench/run.sh\` (see docs/benchmarks.md). Ours and the peer run alternately in the"
   echo "same run on the same input file, page cache warm; each time is the median over"
   echo "$BENCH_ROUNDS processes per side of the median of $BENCH_REPS timed reads after one warm-up."
-  echo "Ratio = ours / peer: below 1 we are faster, above 1 we are slower."
+  echo "Ratio = ours / peer: below 1 we are faster, above 1 we are slower. The wall-time ratio is"
+  echo "what a user waits for; the CPU-time ratio leaves out waiting for a core and is the steadier"
+  echo "one when other jobs load the machine (load average below)."
   echo
   echo "- date: $(date -u '+%Y-%m-%d %H:%M UTC')"
   echo "- commit: $commit"
-  echo "- machine: $cpu, $(nproc) cores, $(free -g | awk '/^Mem:/ {print $2}') GiB, $(uname -sr); shared with other jobs"
+  echo "- machine: $cpu, $(nproc) cores, $(free -g | awk '/^Mem:/ {print $2}') GiB, $(uname -sr)"
+  echo "- load average (1, 5, 15 min) at start: $load_start; at end: $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "- compiler: $(cc --version | head -1); flintstone built CMAKE_BUILD_TYPE=Release"
   echo "- peer: assimp $(dpkg-query -W -f='${Version}' libassimp-dev) (Debian libassimp-dev)"
   echo "- peers (Delaunay): CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) (libcgal-dev, g++ -O2 -DNDEBUG), qhull $(dpkg-query -W -f='${Version}' qhull-bin) (qhull-bin), TetGen $(dpkg-query -W -f='${Version}' tetgen) (tetgen)"
   echo
-  echo "| workload | ours (s) | peer | peer (s) | ratio ours/peer | notes |"
-  echo "|---|---:|---|---:|---:|---|"
+  echo "| workload | ours (s) | peer | peer (s) | ratio ours/peer (wall) | ratio (CPU) | notes |"
+  echo "|---|---:|---|---:|---:|---:|---|"
   awk -F'|' '
-    $1 == "ROW"   { printf "| %s | %.4f | %s | %.4f | **%.2f** | %s |\n", $2, $3, $4, $5, $3 / $5, $6 }
-    $1 == "ERROR" { printf "| %s | failed | | | | %s |\n", $2, $3 }' "$rows"
+    $1 == "ROW"   { printf "| %s | %.4f | %s | %.4f | **%.2f** | %s | %s |\n", $2, $3, $4, $5, $3 / $5, $6, $7 }
+    $1 == "ERROR" { printf "| %s | failed | | | | | %s |\n", $2, $3 }' "$rows"
   echo
-  echo "In words (a ratio within 10% of 1 is noise on this machine):"
+  echo "In words (a ratio within 10% of 1 is taken as noise; the verdict needs wall and CPU time to agree):"
   echo
   awk -F'|' '$1 == "ROW" {
-    r = $3 / $5
-    if (r > 1.1)       printf "- %s: **ours is %.1fx slower than %s**\n", $2, r, $4
-    else if (r < 0.91) printf "- %s: ours is %.1fx faster than %s\n", $2, 1 / r, $4
-    else               printf "- %s: ours and %s are on par (ratio %.2f)\n", $2, $4, r
+    w = $3 / $5; c = ($6 == "-") ? w : $6
+    if (w > 1.1 && c > 1.1)        printf "- %s: **ours is %.1fx slower than %s**\n", $2, w, $4
+    else if (w < 0.91 && c < 0.91) printf "- %s: ours is %.1fx faster than %s\n", $2, 1 / w, $4
+    else printf "- %s: ours and %s are on par (ratio %.2f wall, %s CPU)\n", $2, $4, w, $6
   }' "$rows"
   echo
   echo "Where the time goes when we are slower: see \"Findings\" in docs/benchmarks.md (readers) and"

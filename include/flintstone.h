@@ -146,15 +146,14 @@ int fl_insphere_weighted(const double *a, const double *b, const double *c, cons
 /* Symbolically perturbed predicates (Simulation of Simplicity). Each point carries a global
  * index (its position in the caller's input); the indices of one call must be pairwise
  * distinct. The perturbation depends only on (coordinates, index), so all answers of one
- * family are consistent with a single perturbed configuration. Every _sos function returns
- * the unperturbed sign whenever that is nonzero, and for any argument order:
- *  - swapping two arguments together with their indices flips the sign (the result depends
- *    only on the set of (point, index) pairs and the parity of their order);
+ * family are consistent with a single perturbed configuration. Every _sos function:
+ *  - returns the unperturbed sign whenever that is nonzero;
+ *  - flips its sign when two arguments are swapped together with their indices (the result
+ *    depends only on the set of (point, index) pairs and the parity of their order).
  *
  * Orientation (Edelsbrunner-Mucke): coordinate j (0-based) of the point with index i is moved
  * by eps^(2^(i*dim + dim-1-j)) for an infinitesimal eps > 0: a lower index moves more, and
- * within a point the last coordinate moves most. Never returns 0, even for coincident points.
- */
+ * within a point the last coordinate moves most. Never returns 0, even for coincident points. */
 int fl_orient2d_sos(const double *a, const double *b, const double *c, uint32_t ia, uint32_t ib,
                     uint32_t ic);
 int fl_orient3d_sos(const double *a, const double *b, const double *c, const double *d,
@@ -163,17 +162,18 @@ int fl_orient3d_sos(const double *a, const double *b, const double *c, const dou
 /* In-circle / in-sphere (Devillers-Teillaud style, for Delaunay and regular triangulations):
  * coordinates are NOT perturbed; only the lifted coordinate is, as if the point with index i
  * had weight w + eps^(2^32 - i): a higher index is perturbed more (is "heavier"). The
- * perturbed determinant is det + sum_k eps_k * cofactor_k, and each cofactor is, up to sign,
- * the orientation of the other points, so a zero determinant is decided by the orientation
- * of the remaining points after dropping the highest-index point, then the next, and so on.
- * Consequences callers can rely on:
- *  - the result is nonzero whenever fl_orient2d(a, b, c) != 0 (fl_orient3d(a, b, c, d) != 0),
- *    and more generally unless all points are collinear (coplanar), when it is 0;
+ * determinant is linear in the lift, and the coefficient of point k's perturbation is, up to
+ * a sign fixed by k's argument position, the orientation of the other points; so a zero
+ * determinant is decided by the orientation of the points left after dropping the
+ * highest-index point, else the next highest, and so on. Callers can rely on:
+ *  - the result is nonzero whenever fl_orient2d(a, b, c) != 0 (fl_orient3d(a, b, c, d) != 0);
+ *    it is 0 exactly when all the points are collinear (coplanar);
  *  - a point d exactly on the circle through a, b, c (orient2d(a, b, c) = +1) with a higher
- *    index than a, b and c is reported inside (+1): a later-inserted point on the circle is
- *    in conflict;
- *  - the orientation predicates are unperturbed in this family: use fl_orient2d/3d (not _sos)
- *    alongside these, and never call them on flat triangles/tetrahedra.
+ *    index than a, b and c is reported inside (+1): a later-inserted cocircular point is in
+ *    conflict;
+ *  - coordinates are unperturbed in this family, so it pairs with the plain fl_orient2d/3d,
+ *    not with fl_orient*_sos (a different perturbation). On a flat triangle/tetrahedron the
+ *    answer is still consistent with the perturbed lifted points but describes no circle.
  * The weighted versions use the same rule on the weight (the lift is |p|^2 - w). */
 int fl_incircle_sos(const double *a, const double *b, const double *c, const double *d,
                     uint32_t ia, uint32_t ib, uint32_t ic, uint32_t id);
@@ -275,7 +275,8 @@ typedef struct fl_mesh_report {
     size_t nonmanifold_edges;     /* edges with three or more incident triangles */
     size_t nonmanifold_vertices;  /* referenced vertices whose triangles form more than one fan
                                    * (edge-connected set around the vertex), e.g. two cones
-                                   * touching at their apex */
+                                   * touching at their apex; a triangle repeating an index has
+                                   * one corner (fan member) per occurrence */
     size_t misoriented_edges;     /* edges used twice in the same direction */
     int closed;                   /* 1 iff faces > 0 and every edge has exactly two triangles */
     int manifold;                 /* 1 iff no non-manifold edge and no non-manifold vertex */
@@ -318,11 +319,29 @@ fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
 
 void fl_mesh_report_free(fl_mesh_report *report);
 
+/* Self-intersecting triangle pairs, as counted by fl_mesh_check. */
+typedef struct fl_mesh_pairs {
+    size_t total;    /* number of intersecting pairs (= fl_mesh_report.self_intersections) */
+    size_t count;    /* pairs kept in `pairs`: min(total, max_pairs) */
+    uint32_t *pairs; /* 2 per kept pair: triangle indices, lower first (NULL when count = 0) */
+} fl_mesh_pairs;
+
+/* Finds the self-intersecting triangle pairs (definition: fl_mesh_report.self_intersections)
+ * and keeps the first max_pairs found (in a deterministic order); so a caller can show where a
+ * mesh intersects itself. `progress` may be NULL. Release with fl_mesh_pairs_free. Errors as
+ * fl_mesh_check; on failure *out is zeroed. */
+fl_status fl_mesh_self_intersections(const fl_mesh *mesh, size_t max_pairs,
+                                     fl_progress_fn progress, void *progress_user,
+                                     fl_mesh_pairs *out, fl_error *err);
+
+void fl_mesh_pairs_free(fl_mesh_pairs *pairs);
+
 /* Welds exactly coincident vertices: out receives the distinct vertex positions (==, so -0
  * equals +0) in order of first occurrence and mesh's triangles re-indexed to them, in the same
  * order (triangles that become degenerate are kept; fl_mesh_check counts them). Vertices no
  * triangle uses are kept too. O(V + T) expected. Release out with fl_mesh_free. Errors:
- * FL_ERR_INPUT for an index >= vertex_count, FL_ERR_NOMEM; on failure *out is zeroed. */
+ * FL_ERR_INPUT for an index >= vertex_count or a non-finite coordinate, FL_ERR_NOMEM; on
+ * failure *out is zeroed. */
 fl_status fl_mesh_weld(const fl_mesh *mesh, fl_mesh *out, fl_error *err);
 
 /* What fl_polygon_check found. Release with fl_polygon_report_free. */
@@ -337,6 +356,8 @@ typedef struct fl_polygon_report {
                                    * different rings or non-consecutive edges of one ring with
                                    * a common point; consecutive edges overlapping beyond their
                                    * common vertex. Rings with < 3 vertices take no part. */
+    size_t first_crossing[2];     /* when edge_intersections > 0: one such pair of edges, each
+                                   * named by the index of its first vertex (lower first) */
     int *ring_orientation;        /* per ring: +1 counter-clockwise, -1 clockwise, 0 when the
                                    * ring is degenerate; exact turn at the lowest-leftmost vertex,
                                    * which is the ring's orientation when the ring is simple */
@@ -350,9 +371,10 @@ typedef struct fl_polygon_report {
 
 /* Checks planar polygons: simplicity, ring orientation, areas, holes inside their outer ring.
  * O(n log n) for n vertices when few edges are near each other, plus O(outer ring size) per
- * hole for holes_inside. An all-zero polygon (no vertices, rings or polygons) is valid. On success *report must be
- * released with fl_polygon_report_free. Errors: FL_ERR_INPUT for ring/polygon ranges that do
- * not fit the arrays or non-finite coordinates; FL_ERR_NOMEM. On failure *report is zeroed. */
+ * hole for holes_inside. An all-zero polygon (no vertices, rings or polygons) is valid.
+ * On success *report must be released with fl_polygon_report_free. Errors: FL_ERR_INPUT for
+ * ring/polygon ranges that do not fit the arrays or non-finite coordinates; FL_ERR_NOMEM.
+ * On failure *report is zeroed. */
 fl_status fl_polygon_check(const fl_polygon *polygon, fl_polygon_report *report, fl_error *err);
 
 void fl_polygon_report_free(fl_polygon_report *report);
@@ -513,6 +535,279 @@ fl_status fl_rt3_verify(const double *xyzw, const fl_rt3 *rt, fl_error *err);
 void fl_rt3_free(fl_rt3 *rt);
 
 /* end of delaunay */
+
+
+/* ==== graphs ============================================================================== */
+/* (section owned by src/graphs) — the γ-neighbourhood graph and the classical graphs it unifies
+ * (thesis ch. 2.2 and 3). See docs/gamma.md for every parameter regime and the algorithms.
+ *
+ * The γ-neighbourhood N_γ(c0,c1) of k vertices in kD (an edge in 2D, a triangle in 3D) is built
+ * from two balls B0, B1 touching the vertices, of radii r/(1-|c0|) and r/(1-|c1|), where r is the
+ * radius of the smallest ball touching them (Def. 3.1). c0, c1 in [-1,1], |c0| <= |c1|;
+ * c0*c1 > 0: the centres lie on opposite sides of the vertices' hyperplane, c0*c1 < 0: on the same
+ * side; c1 >= 0: the neighbourhood is the union of the open balls, c1 < 0: their intersection.
+ * The open simplex is always part of it; |c| = 1 is an open half-space. */
+
+/* Which γ-graph to build. range == 0: γ(c[0], c[1]) joins the vertices of a simplex when one of
+ * its (at most two, mirror-symmetric) N_γ(c[0],c[1]) is empty (Def. 3.2); needs c in [-1,1] and
+ * |c[0]| <= |c[1]|. range != 0: γ([c[0],c[1]],[c[2],c[3]]) joins them when their largest empty
+ * N_γ(c0',c1') has c0' in [c[0],c[1]] and c1' in [c[2],c[3]] (Def. 3.3); needs
+ * -1 <= c[0] <= c[1] <= 1 and -1 <= c[2] <= c[3] <= 1.
+ * Reductions (§3.2): γ(-1,1) = convex hull, γ([-1,1],[0,1]) = Delaunay (all simplices with an
+ * empty ball; equal to the DT on non-degenerate input), γ(0,0) = Gabriel graph (2D),
+ * γ(b,b) = circle-based β-skeleton, γ(1,1) empty and γ(-1,-1) complete in general position. */
+typedef struct fl_gamma_params {
+    int range;
+    double c[4];
+} fl_gamma_params;
+
+/* How to build it. All zero is a safe default: the fastest exact method for the parameters. */
+typedef enum fl_gamma_method {
+    FL_GAMMA_AUTO = 0,       /* Delaunay-based when c1' >= 0 suffices (Thm. 3.2), output-sensitive
+                                search for non-Delaunay simplices (c1' < 0), brute force last */
+    FL_GAMMA_BRUTE_FORCE = 1 /* Theorem 3.1: every k-subset against every point, O(N^(k+1)) */
+} fl_gamma_method;
+
+typedef struct fl_graph_options {
+    fl_gamma_method method;
+    int want_params;         /* nonzero: also return (c0', c1') of every simplex */
+    fl_progress_fn progress; /* may be NULL */
+    void *progress_user;
+} fl_graph_options;
+
+/* A geometric (hyper-)graph on `vertex_count` input points of dimension `dim`: `simplex_count`
+ * simplices of `simplex_size` input indices each (2: edges, 3: triangles), each sorted
+ * increasingly, the list sorted lexicographically. `params` is NULL or holds (c0', c1') per
+ * simplex (γ-graphs with want_params). Free with fl_graph_free. */
+typedef struct fl_graph {
+    int dim;
+    size_t vertex_count;
+    int simplex_size;
+    size_t simplex_count;
+    uint32_t *simplices;
+    double *params;
+} fl_graph;
+
+void fl_graph_free(fl_graph *graph);
+
+/* Builds a γ-graph of n points (dim 2: edges, dim 3: triangles). coords holds n*dim finite
+ * doubles; the points must be pairwise distinct (duplicates are reported with their indices).
+ * opt may be NULL. Cost: O(N log N) for ranges with c2 >= 0 in non-degenerate sets (Thm. 3.2),
+ * output-sensitive for c1' < 0 in 2D, O(N^(k+1)) brute force otherwise (see docs/gamma.md).
+ * On failure *out is zeroed. FL_ERR_USAGE for bad parameters, FL_ERR_INPUT for bad points. */
+fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma_params *params,
+                         const fl_graph_options *opt, fl_graph *out, fl_error *err);
+
+/* The largest empty neighbourhood of one simplex (k = dim distinct indices) against all n
+ * points, in O(N): *c0, *c1 receive (c0', c1') (Def. 3.3) and the return value is 1; it is 0
+ * when no N_γ of the simplex is empty (another point lies in the closed simplex, or the vertices
+ * are collinear) and -1 on bad arguments. c1' >= 0 exactly when some ball touching the vertices
+ * is empty; this is the quantity constriction's γ-indicator derives from (Def. 5.1/5.2). */
+int fl_gamma_simplex_params(const double *coords, size_t n, int dim, const uint32_t *simplex,
+                            double *c0, double *c1);
+
+/* Parses "c0,c1" (range 0) or "c0,c1,c2,c3" (range 1) into *params and validates it. */
+fl_status fl_gamma_params_parse(const char *text, fl_gamma_params *params, fl_error *err);
+
+/* The classical graphs of thesis §2.2. */
+typedef enum fl_graph_kind {
+    FL_GRAPH_CONVEX_HULL, /* edges (2D) / triangles (3D), = γ(-1,1) */
+    FL_GRAPH_DELAUNAY,    /* edges / triangles with an empty ball, = γ([-1,1],[0,1]) */
+    FL_GRAPH_GABRIEL,     /* edges whose smallest ball is empty (kD, Def. 2.9) */
+    FL_GRAPH_RNG,         /* relative neighbourhood graph (Def. 2.8), edges */
+    FL_GRAPH_EMST,        /* Euclidean minimum spanning tree (Def. 2.5), edges; ties: lower index */
+    FL_GRAPH_NNG,         /* nearest-neighbour graph (Def. 2.4): i joined to its nearest point,
+                             ties to the lowest index */
+    FL_GRAPH_BETA_CIRCLE, /* β_c(b) skeleton (Def. 2.15), 2D only, b in [-1,1] */
+    FL_GRAPH_BETA_LUNE,   /* β_l(b) skeleton (Def. 2.16), 2D only, b in [-1,1] */
+    FL_GRAPH_ALPHA_SHAPE  /* α(a) shape (Def. 2.14): simplices touched by a generalized ball of
+                             radius 1/a that contains no point in its interior (a < 0), that
+                             contains every point (a > 0), or a half-space (a = 0, the hull) */
+} fl_graph_kind;
+
+/* Builds a classical graph; `param` is b for the β-skeletons, a for the α-shape, unused
+ * otherwise. Same input contract as fl_gamma_graph. */
+fl_status fl_classic_graph(const double *coords, size_t n, int dim, fl_graph_kind kind,
+                           double param, fl_graph *out, fl_error *err);
+
+/* Parses "ch", "dt", "gabriel", "rng", "emst", "nng", "beta-circle:B", "beta-lune:B",
+ * "alpha:A" (the CLI's --kind). */
+fl_status fl_graph_kind_parse(const char *text, fl_graph_kind *kind, double *param,
+                              fl_error *err);
+
+/* Writes the graph of the n points `coords` (dimension graph->dim) by the extension of path:
+ * .svg (2D only: points and edges, like the thesis's Figures 3.3-3.6), .obj (v lines, then l
+ * lines for edges or f lines for triangles), .ply (ascii: vertices, then edges or faces).
+ * Atomic: on failure the target is untouched. */
+fl_status fl_write_graph(const char *path, const double *coords, size_t n, const fl_graph *graph,
+                         fl_error *err);
+
+/* end of graphs */
+
+/* ==== reconstruct ========================================================================= */
+/* (section owned by src/reconstruct; docs/reconstruct2d.md)
+ *
+ * Boundary construction by constriction (thesis ch. 5): from scattered points alone, a simple
+ * polygon through all of them, found by peeling triangles off the Delaunay triangulation
+ * (= γ([-1,1],[0,1])) from the convex hull inward (Algorithm 5.1). A boundary edge v_i v_j may
+ * be deleted with its triangle v_i v_j v_k only while v_k is not yet on the boundary (§5.2), so
+ * the boundary stays a simple polygon; among the removable edges the one with the smallest key
+ * goes first. When no edge is removable but points remain inside ("locked", §4.3.3, or a
+ * non-Hamiltonian triangulation, §5.4), the graph is augmented with the extra edges of
+ * γ([-1,1],[c0,1]) for c0 = -1/L, -2/L, ..., -1 until every point is on the boundary. */
+
+/* Which key orders the removable boundary edges (thesis §5.2, §4.3.3, §4.3.4 / §5.6). */
+typedef enum fl_reconstruct2_criterion {
+    FL_RECONSTRUCT2_GAMMA = 0, /* γ-indicator (Def. 5.1, eq. 5.1): 1 - sin θ when the angle θ at
+                                  the opposite vertex is acute, sin θ - 1 when obtuse; smallest
+                                  first, i.e. the widest-seen vertex first */
+    FL_RECONSTRUCT2_AREA_CHANGE = 1, /* Boissonnat's minimal change, eq. 4.1 in 2D:
+                                        (|v_i v_k| + |v_k v_j| - |v_i v_j|) / perimeter */
+    FL_RECONSTRUCT2_VORONOI_SKELETON = 2 /* shortest Voronoi skeleton (O'Rourke et al.) as a
+                                            constriction: delete the triangle whose Voronoi
+                                            vertex takes the most skeleton length with it */
+} fl_reconstruct2_criterion;
+
+/* Options of fl_reconstruct2; all zero is the default (γ-indicator, no kept edges, augmentation
+ * in 10 steps of c0, no progress reports). */
+typedef struct fl_reconstruct2_options {
+    fl_reconstruct2_criterion criterion;
+    const uint32_t *keep; /* keep_count pairs of input indices: edges that must end up on the
+                             boundary (constrained constriction, §5.7); may be NULL */
+    size_t keep_count;
+    int extra_levels; /* augmentation steps: c0 = -k/L for k = 1..L with L = extra_levels;
+                         0 means 10 (c0 = -0.1, -0.2, ..., -1 as in Fig. 5.7), < 0 disables
+                         augmentation (pure Delaunay constriction) */
+    fl_progress_fn progress; /* may be NULL; stage "constriction" */
+    void *progress_user;
+} fl_reconstruct2_options;
+
+/* The constructed boundary. Indices refer to the input points; of exact duplicates only the
+ * first occurrence appears (the others share its place on the boundary). */
+typedef struct fl_reconstruction2 {
+    size_t point_count;    /* n as given */
+    size_t unique_count;   /* distinct points */
+    size_t boundary_count; /* vertices of the boundary polygon */
+    uint32_t *boundary;    /* the polygon as a counterclockwise vertex cycle (not repeated) */
+    size_t triangle_count; /* triangles inside the polygon: boundary_count - 2 plus twice the
+                              points left inside (when all_on_boundary is 0) */
+    uint32_t *tri;         /* 3 per triangle, counterclockwise; they tile the polygon */
+    size_t delaunay_count; /* the Delaunay triangulation constriction started from */
+    uint32_t *delaunay_tri;
+    int all_on_boundary;   /* 1 when every distinct point is a boundary vertex and every kept
+                              edge a boundary edge; 0 otherwise, and `reason` says why */
+    double augmented_c0;   /* the c0 of γ([-1,1],[c0,1]) that was needed, NaN when the Delaunay
+                              triangulation sufficed */
+    double area;           /* area of the polygon (positive) */
+    char reason[256];      /* empty when all_on_boundary is 1 */
+} fl_reconstruction2;
+
+/* Constructs the boundary polygon of the n points xy[2i], xy[2i+1] by constriction. The result
+ * is always a simple counterclockwise polygon together with a triangulation of its interior;
+ * when some points cannot be brought onto the boundary (constriction locked even at c0 = -1, or
+ * kept edges that make it impossible) the call still succeeds with all_on_boundary = 0, the
+ * points left inside the polygon and a reason. `opt` may be NULL. Expected O(n log n).
+ * Errors (then *out is zeroed): FL_ERR_USAGE for NULL buffers or a bad criterion;
+ * FL_ERR_INPUT for NaN/Inf coordinates, fewer than 3 distinct points, kept edges with an index
+ * out of range, joining a point to itself (or its duplicate), crossing each other or passing
+ * through a point, or three kept edges at one point; FL_ERR_ALGORITHM when all points are
+ * collinear (no polygon has positive area) or when cancelled; FL_ERR_NOMEM. */
+fl_status fl_reconstruct2(const double *xy, size_t n, const fl_reconstruct2_options *opt,
+                          fl_reconstruction2 *out, fl_error *err);
+
+/* Parses "gamma", "area-change" or "voronoi-skeleton" (the CLI's --criterion). */
+fl_status fl_reconstruct2_criterion_parse(const char *text, fl_reconstruct2_criterion *criterion,
+                                          fl_error *err);
+
+/* Writes the result by the extension of path: .xy and .geojson/.json (the boundary polygon, via
+ * fl_write_polygon), .svg (points, the Delaunay triangulation faint and the boundary bold, like
+ * thesis Figs. 5.2-5.3), .off (the interior triangles as a mesh with z = 0; all n input points
+ * are its vertices). xy must be the n points rec was built from. Atomic. */
+fl_status fl_write_reconstruction2(const char *path, const double *xy, size_t n,
+                                   const fl_reconstruction2 *rec, fl_error *err);
+
+/* Frees the arrays and zeroes rec; safe on a zeroed or already-freed struct. */
+void fl_reconstruction2_free(fl_reconstruction2 *rec);
+
+/* end of reconstruct */
+
+
+/* ==== reconstruct ========================================================================= */
+/* (section owned by src/reconstruct; docs/reconstruct2d.md, docs/reconstruct3d.md) */
+
+/* ---- 3D constriction ----
+ * Boundary construction in 3D by constriction (thesis §5.3, Algorithm 5.1): the Delaunay
+ * tetrahedralization (= γ([-1,1],[0,1])) is peeled from the convex hull inward, one boundary
+ * tetrahedron at a time, so that the boundary stays a closed, oriented 2-manifold of genus 0:
+ * a tetrahedron with one boundary triangle goes only while its opposite vertex is not on the
+ * boundary, one with two boundary triangles only while its opposite edge is not on the
+ * boundary, one with three never. Among the removable tetrahedra the one with the smallest key
+ * goes first. Constriction stops when every distinct point is on the boundary (then `extra`
+ * more removals), or when nothing is removable ("locked", thesis §4.3.3 / §5.4). */
+
+/* Which key orders the removable boundary tetrahedra. */
+typedef enum fl_reconstruct3_criterion {
+    FL_RECONSTRUCT3_GAMMA = 0,      /* γ-indicator (Def. 5.2, eq. 5.2) of the boundary triangle
+                                       w.r.t. the opposite vertex: s (1 - r/R) with r the radius
+                                       of the triangle's circumcircle, R of the tetrahedron's
+                                       circumsphere, s = +1 when the sphere's centre lies on the
+                                       opposite vertex's side of the triangle, else -1; summed
+                                       over both triangles of two-triangle tetrahedra (§5.3
+                                       selection rule); smallest first */
+    FL_RECONSTRUCT3_AREA_CHANGE = 1 /* Boissonnat's minimal change, eq. 4.1: (area of the
+                                       inner faces - area of the boundary faces) / total area */
+} fl_reconstruct3_criterion;
+
+/* Options of fl_reconstruct3; all zero is the default (γ-indicator, stop as soon as every point
+ * is on the boundary, no progress reports). */
+typedef struct fl_reconstruct3_options {
+    fl_reconstruct3_criterion criterion;
+    size_t extra; /* removable tetrahedra to remove after every point is on the boundary, by the
+                     same rule (the candlestick of thesis Fig. 5.5); 0 stops at once */
+    fl_progress_fn progress; /* may be NULL; stage "constriction 3d" (and "delaunay 3d") */
+    void *progress_user;
+} fl_reconstruct3_options;
+
+/* The constructed boundary and its interior. Indices refer to the input points; of exact
+ * duplicates only the first occurrence appears (fl_dt3.duplicate_of). */
+typedef struct fl_reconstruction3 {
+    size_t point_count;    /* n as given */
+    size_t unique_count;   /* distinct points */
+    size_t triangle_count; /* boundary triangles */
+    uint32_t *tri;         /* 3 per triangle, counterclockwise seen from outside; together a
+                              closed, oriented 2-manifold of genus 0 */
+    size_t tet_count;      /* interior tetrahedra (Delaunay tetrahedra not removed) */
+    uint32_t *tet;         /* 4 per tetrahedron, positively oriented as in fl_dt3; their faces
+                              not shared by two of them are exactly the boundary triangles */
+    size_t delaunay_tet_count; /* tetrahedra of the Delaunay tetrahedralization */
+    size_t removed_count;      /* tetrahedra removed by constriction (extra ones included) */
+    size_t extra_removed;      /* of those, removed after every point was on the boundary */
+    size_t boundary_vertex_count; /* distinct points on the boundary */
+    size_t points_inside;         /* distinct points strictly inside the boundary */
+    uint32_t *inside;             /* their indices (points_inside entries, ascending) */
+    int all_on_boundary;          /* 1 iff points_inside == 0 */
+    double volume;                /* sum of the interior tetrahedra's volumes (positive) */
+    double augmented_c0; /* c0 of γ([-1,1],[c0,1]) needed (§5.4); NaN: Delaunay sufficed or
+                            augmentation was not tried (see reason) */
+    char reason[256];    /* empty when all_on_boundary is 1, else why points remain inside */
+} fl_reconstruction3;
+
+/* Constructs the boundary polyhedron of the n points xyz[3i..3i+2] by constriction of their
+ * Delaunay tetrahedralization. On success the result is always a closed, oriented genus-0
+ * boundary with a tetrahedralization of its interior; when constriction locks before every
+ * point is on the boundary the call still succeeds with all_on_boundary = 0, the points left
+ * inside and a reason. `opt` may be NULL. Expected O(n log n) after the Delaunay
+ * tetrahedralization. Errors (then *out is zeroed): FL_ERR_USAGE for NULL buffers or a bad
+ * criterion; FL_ERR_INPUT for NaN/Inf coordinates or fewer than 4 distinct points;
+ * FL_ERR_ALGORITHM when all points are coplanar or collinear, or when cancelled;
+ * FL_ERR_NOMEM. */
+fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_options *opt,
+                          fl_reconstruction3 *out, fl_error *err);
+
+/* Frees the arrays and zeroes rec; safe on a zeroed or already-freed struct. */
+void fl_reconstruction3_free(fl_reconstruction3 *rec);
+
+/* end of reconstruct */
 
 
 #ifdef __cplusplus

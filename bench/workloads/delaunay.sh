@@ -58,9 +58,10 @@ compare_cgal() {
   agree=$([ "$(field triangles "$o")" = "$(field triangles "$p")" ] &&
     [ "$(field vertices "$o")" = "$(field vertices "$p")" ] && echo "counts agree" ||
     echo "**COUNTS DIFFER**")
-  printf 'ROW|%s|%s|CGAL|%s|%s; wall: median of %d processes x %d builds; CPU %.3f s / %.3f s (ratio %.2f); %s %s / %s, vertices %s / %s (%s); peak RSS %s MB / %s MB\n' \
-    "$workload" "$(median <<<"${o_wall%$'\n'}")" "$(median <<<"${p_wall%$'\n'}")" "$notes" \
-    "$rounds" "$reps" "$OURS_CPU" "$cgal_cpu" "$(awk -v o="$OURS_CPU" -v p="$cgal_cpu" 'BEGIN {printf "%.2f", o / p}')" \
+  printf 'ROW|%s|%s|CGAL|%s|%s|%s; wall: median of %d processes x %d builds; CPU %.3f s / %.3f s; %s %s / %s, vertices %s / %s (%s); peak RSS %s MB / %s MB\n' \
+    "$workload" "$(median <<<"${o_wall%$'\n'}")" "$(median <<<"${p_wall%$'\n'}")" \
+    "$(awk -v o="$OURS_CPU" -v p="$cgal_cpu" 'BEGIN {printf "%.2f", o / p}')" "$notes" \
+    "$rounds" "$reps" "$OURS_CPU" "$cgal_cpu" \
     "$cells" "$(field triangles "$o")" "$(field triangles "$p")" \
     "$(field vertices "$o")" "$(field vertices "$p")" "$agree" \
     "$(mb "$(field maxrss_kb "$o")")" "$(mb "$(field maxrss_kb "$p")")"
@@ -83,6 +84,8 @@ run_peer() {
   PEER_RSS_MB=$(mb "$(sed -n 's/^TIME .*maxrss=//p' <<<"$out")")
 }
 
+cpu_ratio() { awk -v o="$OURS_CPU" -v p="$PEER_CPU" 'BEGIN {printf "%.2f", o / p}'; }
+
 # qhull_row WORKLOAD PREFIX ROUNDS: `qdelaunay Qt s TI PREFIX.qh`; Qt triangulates non-simplicial
 # regions, s prints the summary with qhull's own CPU time of the computation after reading.
 qhull_row() {
@@ -93,8 +96,8 @@ qhull_row() {
     echo "ERROR|$workload|qdelaunay failed"
     return 0
   fi
-  printf 'ROW|%s|%s|qhull|%s|CPU seconds, both sides: ours = CPU time of one build (median), qhull = its "CPU seconds to compute hull (after input)" (median of %d runs of qdelaunay Qt); qhull whole process incl. reading text: %s s wall, peak RSS %s MB; regions: ours %s, qhull %s\n' \
-    "$workload" "$OURS_CPU" "$PEER_CPU" "$rounds" "$PEER_WALL" "$PEER_RSS_MB" "$OURS_CELLS" "$PEER_CELLS"
+  printf 'ROW|%s|%s|qhull|%s|%s|CPU seconds in both time columns (so both ratios are CPU-time ratios): ours = CPU time of one build (median), qhull = its "CPU seconds to compute hull (after input)" (median of %d runs of qdelaunay Qt); qhull whole process incl. reading text: %s s wall, peak RSS %s MB; regions: ours %s, qhull %s\n' \
+    "$workload" "$OURS_CPU" "$PEER_CPU" "$(cpu_ratio)" "$rounds" "$PEER_WALL" "$PEER_RSS_MB" "$OURS_CELLS" "$PEER_CELLS"
 }
 
 # tetgen WORKLOAD PREFIX ROUNDS [-w]: `tetgen -V -N -E -F PREFIX.node` (no output files);
@@ -108,8 +111,8 @@ tetgen_row() {
     echo "ERROR|$workload|tetgen failed"
     return 0
   fi
-  printf 'ROW|%s|%s|TetGen|%s|CPU seconds, both sides: ours = CPU time of one build (median), TetGen = its "Delaunay seconds" (median of %d runs of tetgen %s-V); TetGen whole process incl. reading text: %s s wall, peak RSS %s MB; tetrahedra: ours %s, TetGen %s\n' \
-    "$workload" "$OURS_CPU" "$PEER_CPU" "$rounds" "${*:+$* }" "$PEER_WALL" "$PEER_RSS_MB" "$OURS_CELLS" "$PEER_CELLS"
+  printf 'ROW|%s|%s|TetGen|%s|%s|CPU seconds in both time columns (so both ratios are CPU-time ratios): ours = CPU time of one build (median), TetGen = its "Delaunay seconds" (median of %d runs of tetgen %s-V); TetGen whole process incl. reading text: %s s wall, peak RSS %s MB; tetrahedra: ours %s, TetGen %s\n' \
+    "$workload" "$OURS_CPU" "$PEER_CPU" "$(cpu_ratio)" "$rounds" "${*:+$* }" "$PEER_WALL" "$PEER_RSS_MB" "$OURS_CELLS" "$PEER_CELLS"
 }
 
 # all_peers WORKLOAD MODE PREFIX ROUNDS REPS NOTES QHULL(1/0) TETGEN(1/0)

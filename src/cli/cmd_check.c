@@ -57,6 +57,7 @@ static void mesh_json(const fl_mesh_report *r, double seconds)
     cli_json_uint(&j, "boundary_edges", r->boundary_edges);
     cli_json_uint(&j, "nonmanifold_edges", r->nonmanifold_edges);
     cli_json_uint(&j, "nonmanifold_vertices", r->nonmanifold_vertices);
+    cli_json_uint(&j, "misoriented_edges", r->misoriented_edges);
     cli_json_uint(&j, "unreferenced_vertices", r->unreferenced_vertices);
     cli_json_uint(&j, "degenerate_faces", r->degenerate_faces);
     cli_json_uint(&j, "duplicate_vertices", r->duplicate_vertices);
@@ -91,6 +92,9 @@ static void mesh_human(const char *path, const fl_mesh_report *r)
         printf("%zu\n", r->self_intersections);
     else
         printf("not checked\n");
+    if (r->duplicate_vertices && r->self_intersections)
+        printf("  note: vertices at equal positions are distinct vertices here, so triangles of\n"
+               "  an unwelded triangle soup touch and count as intersecting\n");
     printf("  area %.6g", r->area);
     if (!isnan(r->volume)) printf(", volume %.6g", r->volume);
     printf("\n");
@@ -104,7 +108,8 @@ static int check_mesh(const char *path, const cli_common *c, int skip_si)
     if (fl_read_mesh(path, &mesh, &err)) return cli_report(&err);
     cli_progress prog;
     cli_progress_init(&prog, c);
-    fl_mesh_check_options opt = {skip_si, cli_progress_fn, &prog};
+    fl_mesh_check_options opt = {
+        .skip_self_intersections = skip_si, .progress = cli_progress_fn, .progress_user = &prog};
     fl_mesh_report r;
     fl_status st = fl_mesh_check(&mesh, &opt, &r, &err);
     cli_progress_done(&prog);

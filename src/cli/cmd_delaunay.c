@@ -17,7 +17,8 @@ static const char *usage_text =
     "Duplicate points are merged and counted; all-collinear (2D) or all-coplanar (3D) input\n"
     "exits 3 with an explanation.\n"
     "\n"
-    "  -o OUT      2D: .off .obj .ply .stl (triangles, z = 0); 3D: .vtk or .node/.ele\n"
+    "  -o OUT      2D: .svg (picture) or .off .obj .ply .stl (triangles, z = 0);\n"
+    "              3D: .vtk or .node/.ele\n"
     "  --weighted  POINTS holds 4 numbers a line: x y z w\n"
     "  --verify    check orientation, adjacency, Euler relation and the empty-sphere (power)\n"
     "              property of every simplex with exact predicates; exit 3 if any fails\n"
@@ -58,12 +59,38 @@ static void print_summary(const cli_common *c, const dt_summary *s)
     printf(" (%.3f s)\n", s->seconds);
 }
 
-/* Writes a 2D triangulation as a flat mesh (z = 0) in any mesh format. */
+/* The edges of a 2D triangulation as a graph, for the SVG picture: each interior edge once
+ * (from the triangle with the lower index), each hull edge once. */
+static fl_status write_dt2_svg(const char *path, const fl_points *p, const fl_dt2 *dt,
+                               fl_error *err)
+{
+    fl_graph g = {2,   p->count, 2, 0, fl_alloc_array(6 * dt->triangle_count + 1, sizeof(uint32_t)),
+                  NULL};
+    if (!g.simplices) return fl_fail(err, FL_ERR_NOMEM, path, -1, "out of memory");
+    for (size_t t = 0; t < dt->triangle_count; t++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t nb = dt->adj[3 * t + k];
+            if (nb != UINT32_MAX && nb < t) continue;
+            uint32_t a = dt->tri[3 * t + (k + 1) % 3], b = dt->tri[3 * t + (k + 2) % 3];
+            g.simplices[2 * g.simplex_count] = a < b ? a : b;
+            g.simplices[2 * g.simplex_count + 1] = a < b ? b : a;
+            g.simplex_count++;
+        }
+    fl_status st = fl_write_graph(path, p->coords, p->count, &g, err);
+    fl_graph_free(&g);
+    return st;
+}
+
+/* Writes a 2D triangulation: .svg as a picture of its edges, any mesh format as a flat mesh
+ * (z = 0). */
 static fl_status write_dt2(const char *path, const fl_points *p, const fl_dt2 *dt, fl_error *err)
 {
+    char ext[16];
+    fl_path_extension(path, ext, sizeof ext);
+    if (strcmp(ext, "svg") == 0) return write_dt2_svg(path, p, dt, err);
     fl_mesh m = {0};
     m.vertex_count = p->count;
-    m.xyz = malloc(3 * p->count * sizeof(double) + 1);
+    m.xyz = fl_alloc_array(3 * p->count + 1, sizeof(double));
     if (!m.xyz) return fl_fail(err, FL_ERR_NOMEM, path, -1, "out of memory");
     for (size_t i = 0; i < p->count; i++) {
         m.xyz[3 * i] = p->coords[2 * i];

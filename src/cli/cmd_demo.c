@@ -21,7 +21,8 @@ static const char *usage_text =
     "\n"
     "Runs the pipeline on the bundled inputs (a torus mesh, 160 points on a closed 2D curve,\n"
     "1500 points on a closed surface): mesh check, 2D and 3D Delaunay triangulations verified\n"
-    "with exact predicates. Writes the outputs and summary.json into the output directory.\n"
+    "with exact predicates, the 2D boundary by constriction. Writes the outputs and\n"
+    "summary.json into the output directory.\n"
     "\n"
     "  --data DIR  where the bundled inputs are (default: the source tree's data/demo, then\n"
     "              ./data/demo)\n"
@@ -134,6 +135,42 @@ static int step_delaunay2(demo *d)
     return 0;
 }
 
+/* The leaf's scattered points back to a closed boundary (thesis ch. 5). */
+static int step_reconstruct2(demo *d)
+{
+    char in[1024], out[1024];
+    fl_error err;
+    fl_points p;
+    fl_reconstruction2 rec = {0};
+    path_in(in, sizeof in, d->data_dir, "leaf.xy");
+    path_in(out, sizeof out, d->out_dir, "leaf-boundary.svg");
+    double t0 = cli_now();
+    if (fl_read_points(in, &p, &err)) return step_failed(d, "reconstruct 2d", &err);
+    fl_status st = fl_reconstruct2(p.coords, p.count, NULL, &rec, &err);
+    if (st == FL_OK) st = fl_write_reconstruction2(out, p.coords, p.count, &rec, &err);
+    double seconds = cli_now() - t0;
+    fl_points_free(&p);
+    if (st) {
+        fl_reconstruction2_free(&rec);
+        return step_failed(d, "reconstruct 2d", &err);
+    }
+    cli_json *j = &d->json;
+    cli_json_open_object(j, "reconstruct_2d");
+    cli_json_string(j, "input", in);
+    cli_json_string(j, "output", out);
+    cli_json_uint(j, "points", rec.point_count);
+    cli_json_uint(j, "boundary_vertices", rec.boundary_count);
+    cli_json_bool(j, "all_on_boundary", rec.all_on_boundary);
+    cli_json_double(j, "area", rec.area);
+    cli_json_double(j, "seconds", seconds);
+    cli_json_close(j);
+    if (!d->quiet)
+        printf("boundary  %s: %zu of %zu points on a simple polygon, area %.4g -> %s\n", in,
+               rec.boundary_count, rec.unique_count, rec.area, out);
+    fl_reconstruction2_free(&rec);
+    return 0;
+}
+
 static int step_delaunay3(demo *d)
 {
     char in[1024], out[1024];
@@ -219,7 +256,7 @@ int cmd_demo(int argc, char **argv)
     double t0 = cli_now();
     cli_json_begin(&d.json, d.summary.fp);
     cli_json_string(&d.json, "flintstone", fl_version());
-    if (!step_check(&d) && !step_delaunay2(&d)) step_delaunay3(&d);
+    if (!step_check(&d) && !step_delaunay2(&d) && !step_reconstruct2(&d)) step_delaunay3(&d);
     cli_json_double(&d.json, "seconds", cli_now() - t0);
     cli_json_end(&d.json);
     if (d.failed) {

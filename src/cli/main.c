@@ -11,6 +11,10 @@ static const cli_command commands[] = {
     {"check", "report topology, validity and measures of a mesh or polygon file", cmd_check},
     {"delaunay", "Delaunay triangulation of 2D/3D points, regular triangulation of balls",
      cmd_delaunay},
+    {"graph", "γ-neighbourhood graphs and the classical graphs (hull, Delaunay, Gabriel, ...)",
+     cmd_graph},
+    {"reconstruct", "the boundary through every point: a simple polygon (2D) by constriction",
+     cmd_reconstruct},
     {"version", "print the version", cmd_version},
 };
 

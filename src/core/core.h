@@ -69,6 +69,28 @@ void fl_out_abort(fl_out_file *out);
 /* Lower-cased extension of path without the dot ("" if none), written into ext[size]. */
 void fl_path_extension(const char *path, char *ext, size_t size);
 
+/* Union-find over uint32_t elements stored in `parent` (parent[x] == x for a root), with path
+ * halving; a union makes the smaller root the root, so every set's root is its smallest
+ * element and results do not depend on the order of unions. */
+static inline uint32_t fl_uf_find(uint32_t *parent, uint32_t x)
+{
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    return x;
+}
+
+static inline void fl_uf_union(uint32_t *parent, uint32_t a, uint32_t b)
+{
+    a = fl_uf_find(parent, a);
+    b = fl_uf_find(parent, b);
+    if (a < b)
+        parent[b] = a;
+    else if (b < a)
+        parent[a] = b;
+}
+
 /* Reports progress; returns nonzero when the caller asked to stop. Safe with fn == NULL. */
 static inline int fl_progress(fl_progress_fn fn, void *user, const char *stage, double fraction)
 {

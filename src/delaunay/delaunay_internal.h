@@ -19,16 +19,29 @@ fl_status fl_dt_unique(const double *coords, size_t n, int dim, uint32_t *rep, s
                        fl_error *err);
 
 /* Biased randomized insertion order (Amenta, Choi, Rote 2003) of the n points named by `ids`
- * (indices into `coords`; NULL means 0..n-1). The ids are shuffled with a fixed seed (so the
- * order is deterministic), split into rounds of geometrically growing size (the last round
- * holds 7/8 of the points, the round before 7/8 of the rest, ...), and each round is sorted
- * along a Hilbert curve over the bounding box of all n points. Consecutive points are thus
- * close (short walks during point location) while the rounds keep the expected cost of
- * randomized incremental construction. Writes the n ids, permuted, into order_out (n entries,
- * caller-allocated, may not alias ids). O(n) time (radix sort of 64-bit Hilbert keys).
+ * (indices into `coords`; NULL means 0..n-1). Each point is put in a random round (a fixed hash
+ * of its id, so the order is deterministic): the last round holds about 7/8 of the points, the
+ * round before 7/8 of the rest, and so on; within a round the points follow a Hilbert curve over
+ * the bounding box of all n points. Consecutive points are thus close (short walks during point
+ * location) while the rounds keep the expected cost of randomized incremental construction.
+ * Writes the n ids, permuted, into order_out (n entries, caller-allocated, may not alias ids).
+ * O(n) time (one radix sort of 64-bit (round, Hilbert) keys).
  * Errors: FL_ERR_USAGE (dim not 2 or 3, NULL buffers), FL_ERR_INPUT (NaN or infinite
  * coordinate, naming the point; n > UINT32_MAX - 1), FL_ERR_NOMEM. */
 fl_status fl_dt_brio_order(const double *coords, const uint32_t *ids, size_t n, int dim,
                            uint32_t *order_out, fl_error *err);
+
+/* The same two in caller-provided scratch memory (8-byte aligned, at least the bytes given by
+ * the _scratch_bytes function for n points; NULL or smaller: they allocate their own). On this
+ * kind of machine the first touch of fresh pages costs as much as the triangulation's
+ * arithmetic, so a caller that needs a big buffer later anyway lends it here and its pages are
+ * touched once. */
+size_t fl_dt_unique_scratch_bytes(size_t n);
+size_t fl_dt_brio_scratch_bytes(size_t n);
+fl_status fl_dt_unique_in(const double *coords, size_t n, int dim, uint32_t *rep,
+                          size_t *unique_count, void *scratch, size_t scratch_bytes, fl_error *err);
+fl_status fl_dt_brio_order_in(const double *coords, const uint32_t *ids, size_t n, int dim,
+                              uint32_t *order_out, void *scratch, size_t scratch_bytes,
+                              fl_error *err);
 
 #endif /* FL_DELAUNAY_INTERNAL_H */

@@ -23,23 +23,16 @@
 #include "delaunay/delaunay_internal.h"
 
 #define GHOST (UINT32_MAX - 1) /* the vertex at infinity */
-#define NO_TRI UINT32_MAX
-#define MAX_POINTS (1u << 29) /* triangle << 2 must fit in 32 bits: 2n triangles < 2^30 */
+#define MAX_POINTS (1u << 29)  /* triangle << 2 must fit in 32 bits: 2n triangles < 2^30 */
 #define PROGRESS_EVERY 65536
 
 /* A triangle: vertices counterclockwise and, across the edge opposite corner k, the neighbour
- * code (triangle << 2) | (index of that edge in the neighbour). One record, 24 bytes, so that a
- * walk or cavity step touches one cache line. */
+ * code (triangle << 2) | (index of that edge in the neighbour). One 24-byte record, so that a
+ * walk or cavity step usually touches a single cache line. */
 typedef struct dt2_tri {
     uint32_t v[3];
     uint32_t nb[3];
 } dt2_tri;
-
-/* A cavity-search frame: triangle t, next edge to look across, edges left to look across. */
-typedef struct dt2_frame {
-    uint32_t t;
-    uint16_t edge, left;
-} dt2_frame;
 
 /* Inside the builder a vertex is its rank in the insertion order: the coordinates are copied in
  * that order, so the points a walk or cavity touches are close in memory as well as in space
@@ -50,8 +43,9 @@ typedef struct dt2_builder {
     const uint32_t *id; /* rank -> input index */
     dt2_tri *tri;
     size_t count, capacity;
-    dt2_frame *stack;
-    uint32_t *cavity, *boundary; /* boundary: (a, b, outside code) triples, in cyclic order */
+    uint32_t *stack;    /* cavity-search frames: (triangle, next edge | edges left << 2) */
+    uint32_t *cavity;   /* triangles of the cavity */
+    uint32_t *boundary; /* (a, b, outside code) triples, in cyclic order */
     size_t stack_cap, cavity_cap, boundary_cap;
     uint32_t last; /* a real triangle near the last inserted point: the next walk's start */
     uint64_t rng;  /* for the stochastic walk */
@@ -125,20 +119,19 @@ static uint32_t locate(dt2_builder *b, uint32_t p)
     }
 }
 
-static int grow(void **a, size_t *cap, size_t need, size_t elem)
+/* Makes room for `need` entries; on failure the buffer is left as it was. */
+static int grow(uint32_t **a, size_t *cap, size_t need)
 {
     if (need <= *cap) return 0;
     size_t c = *cap ? *cap : 64;
     while (c < need)
         c *= 2;
-    void *p = fl_realloc_array(*a, c, elem);
+    uint32_t *p = fl_realloc_array(*a, c, sizeof *p);
     if (!p) return -1;
     *a = p;
     *cap = c;
     return 0;
 }
-
-#define GROW(arr, cap, need) grow((void **)&(arr), &(cap), (need), sizeof *(arr))
 
 /* Collects the conflict region of p, found depth first from t0, and its boundary edges, each
  * with its two vertices and the code of the triangle outside. The region is a tree of
@@ -149,28 +142,28 @@ static int grow(void **a, size_t *cap, size_t need, size_t elem)
 static int find_cavity(dt2_builder *b, uint32_t t0, uint32_t p, size_t *ncav, size_t *nbnd)
 {
     size_t top = 0, nc = 0, nb = 0;
-    b->stack[top++] = (dt2_frame){t0, 0, 3};
+    b->stack[top++] = t0;
+    b->stack[top++] = 0 | 3u << 2; /* edge 0 next, 3 edges left */
     b->cavity[nc++] = t0;
     while (top > 0) {
-        dt2_frame *f = &b->stack[top - 1];
-        if (f->left == 0) {
-            top--;
+        uint32_t frame = b->stack[top - 1], e = frame & 3, left = frame >> 2;
+        if (left == 0) {
+            top -= 2;
             continue;
         }
-        const dt2_tri *t = b->tri + f->t;
-        int e = f->edge;
-        f->edge = (uint16_t)(e == 2 ? 0 : e + 1);
-        f->left--;
+        const dt2_tri *t = b->tri + b->stack[top - 2];
+        b->stack[top - 1] = (e == 2 ? 0 : e + 1) | (left - 1) << 2;
         uint32_t code = t->nb[e], u = code >> 2;
         if (in_conflict(b, b->tri + u, p)) {
             if (nc >= b->count) return -2;
-            if (GROW(b->stack, b->stack_cap, top + 1) || GROW(b->cavity, b->cavity_cap, nc + 1))
+            if (grow(&b->stack, &b->stack_cap, top + 2) || grow(&b->cavity, &b->cavity_cap, nc + 1))
                 return -1;
-            uint16_t entry = (uint16_t)(code & 3);
-            b->stack[top++] = (dt2_frame){u, (uint16_t)(entry == 2 ? 0 : entry + 1), 2};
+            uint32_t entry = code & 3; /* skip the edge back to t: 2 edges left */
+            b->stack[top++] = u;
+            b->stack[top++] = (entry == 2 ? 0 : entry + 1) | 2u << 2;
             b->cavity[nc++] = u;
         } else {
-            if (GROW(b->boundary, b->boundary_cap, 3 * nb + 3)) return -1;
+            if (grow(&b->boundary, &b->boundary_cap, 3 * nb + 3)) return -1;
             b->boundary[3 * nb] = t->v[e == 2 ? 0 : e + 1];
             b->boundary[3 * nb + 1] = t->v[e == 0 ? 2 : e - 1];
             b->boundary[3 * nb + 2] = code;
@@ -270,22 +263,25 @@ static void builder_free(dt2_builder *b)
     free(b->boundary);
 }
 
-/* Triangles with ghosts: a sphere triangulation of m + 1 vertices has 2(m + 1) - 4 faces. */
-static int builder_init(dt2_builder *b, const double *xy, const uint32_t *order, size_t m)
+/* Triangles with ghosts: a sphere triangulation of m + 1 vertices has 2(m + 1) - 4 faces, so
+ * `tri` (from fl_dt2_build, room for 2m) never grows. The coordinate copy gets 24 bytes a point
+ * rather than 16 because its memory becomes the output adjacency (see extract). */
+static int builder_init(dt2_builder *b, const double *xy, const uint32_t *order, size_t m,
+                        dt2_tri *tri)
 {
     memset(b, 0, sizeof *b);
     b->id = order;
-    b->xy = fl_alloc_array(m, 2 * sizeof *b->xy);
+    b->xy = fl_alloc_array(m, 3 * sizeof *b->xy);
     b->capacity = 2 * m;
-    b->tri = fl_alloc_array(b->capacity, sizeof *b->tri);
+    b->tri = tri;
     b->rng = 0x2545F4914F6CDD1DULL;
     if (b->xy)
         for (size_t i = 0; i < m; i++) {
             b->xy[2 * i] = xy[2 * (size_t)order[i]];
             b->xy[2 * i + 1] = xy[2 * (size_t)order[i] + 1];
         }
-    if (!b->xy || !b->tri || GROW(b->stack, b->stack_cap, 64) ||
-        GROW(b->cavity, b->cavity_cap, 64) || GROW(b->boundary, b->boundary_cap, 192))
+    if (!b->xy || !b->tri || grow(&b->stack, &b->stack_cap, 128) ||
+        grow(&b->cavity, &b->cavity_cap, 64) || grow(&b->boundary, &b->boundary_cap, 192))
         return -1;
     return 0;
 }
@@ -316,74 +312,117 @@ static void extract_hull(const dt2_builder *b, uint32_t ghost, size_t h, uint32_
     }
 }
 
-/* Copies the real triangles into *out, numbering them in storage order. */
+/* Exchanges the records at i and j and repoints every neighbour code, theirs included (i and j
+ * may be neighbours). Codes are remapped first and back-pointers written after, so a
+ * back-pointer written twice gets the same value twice. */
+static void swap_records(dt2_tri *tri, uint32_t i, uint32_t j)
+{
+    dt2_tri moved[2] = {tri[j], tri[i]}; /* the records that end at i and at j */
+    uint32_t pos[2] = {i, j};
+    for (int r = 0; r < 2; r++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t x = moved[r].nb[k] >> 2;
+            x = x == i ? j : x == j ? i : x;
+            moved[r].nb[k] = (x << 2) | (moved[r].nb[k] & 3);
+        }
+    tri[i] = moved[0];
+    tri[j] = moved[1];
+    for (int r = 0; r < 2; r++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t code = tri[pos[r]].nb[k];
+            tri[code >> 2].nb[code & 3] = (pos[r] << 2) | (uint32_t)k;
+        }
+}
+
+/* Moves the ghosts behind the real triangles (there are only as many ghosts as hull edges, so
+ * few swaps); afterwards a real triangle's output index is its storage index, and extraction is
+ * one sequential pass. Returns the number of real triangles. */
+static size_t partition_ghosts(dt2_builder *b)
+{
+    size_t lo = 0, hi = b->count;
+    while (lo < hi) {
+        if (!is_ghost(b->tri + lo))
+            lo++;
+        else if (is_ghost(b->tri + hi - 1))
+            hi--;
+        else
+            swap_records(b->tri, (uint32_t)lo++, (uint32_t)--hi);
+    }
+    return lo;
+}
+
+/* Shrinks a buffer whose tail is no longer needed; keeps it whole if the system refuses. */
+static void *shrink(void *p, size_t bytes)
+{
+    void *q = realloc(p, bytes ? bytes : 1);
+    return q ? q : p;
+}
+
+/* Writes the real triangles into *out with input indices for vertices. The output arrays reuse
+ * the builder's memory instead of fresh pages: record t (24 bytes at 24t) becomes the 12 bytes
+ * of out->tri at 12t, which never overlaps a record not yet read; out->adj goes where the
+ * coordinate copy was (no longer needed). Both buffers then pass to *out. */
 static fl_status extract(dt2_builder *b, const double *xy, int want_cc, fl_dt2 *out, fl_error *err)
 {
-    size_t real = 0;
-    uint32_t first_ghost = NO_TRI;
-    uint32_t *id = fl_alloc_array(b->count, sizeof *id);
-    if (!id) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "no memory for the output triangles");
-    for (size_t t = 0; t < b->count; t++) {
-        if (is_ghost(b->tri + t)) {
-            id[t] = NO_TRI;
-            if (first_ghost == NO_TRI) first_ghost = (uint32_t)t;
-        } else {
-            id[t] = (uint32_t)real++;
-        }
-    }
+    size_t real = partition_ghosts(b);
     out->triangle_count = real;
     out->hull_count = b->count - real;
-    out->tri = fl_alloc_array(real, 3 * sizeof *out->tri);
-    out->adj = fl_alloc_array(real, 3 * sizeof *out->adj);
     out->hull = fl_alloc_array(out->hull_count, sizeof *out->hull);
     if (want_cc) out->circumcenters = fl_alloc_array(real, 2 * sizeof *out->circumcenters);
-    if (!out->tri || !out->adj || !out->hull || (want_cc && !out->circumcenters)) {
-        free(id);
+    if (!out->hull || (want_cc && !out->circumcenters))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "no memory for %zu output triangles", real);
-    }
-    for (size_t t = 0; t < b->count; t++) {
-        if (id[t] == NO_TRI) continue;
+    extract_hull(b, (uint32_t)real, out->hull_count, out->hull);
+    uint32_t *tri = (uint32_t *)b->tri, *adj = (uint32_t *)b->xy;
+    for (size_t t = 0; t < real; t++) {
+        dt2_tri rec = b->tri[t];
         for (int k = 0; k < 3; k++) {
-            out->tri[3 * (size_t)id[t] + k] = b->id[b->tri[t].v[k]];
-            out->adj[3 * (size_t)id[t] + k] = id[b->tri[t].nb[k] >> 2];
+            uint32_t u = rec.nb[k] >> 2;
+            tri[3 * t + k] = b->id[rec.v[k]];
+            adj[3 * t + k] = u < real ? u : UINT32_MAX;
         }
     }
-    free(id);
-    extract_hull(b, first_ghost, out->hull_count, out->hull);
+    out->tri = shrink(b->tri, real * 3 * sizeof *out->tri);
+    out->adj = shrink(b->xy, real * 3 * sizeof *out->adj);
+    b->tri = NULL;
+    b->xy = NULL;
     if (want_cc) compute_circumcenters(xy, out->tri, real, out->circumcenters);
     return FL_OK;
 }
 
-/* Unique points (first of each kind) in spatial insertion order. */
-static fl_status insertion_order(const double *xy, const fl_dt2 *out, uint32_t **order,
-                                 fl_error *err)
+/* Unique points (first of each kind) in spatial insertion order; `scratch` is lent to the sort. */
+static fl_status insertion_order(const double *xy, const fl_dt2 *out, void *scratch,
+                                 size_t scratch_bytes, uint32_t **order, fl_error *err)
 {
     size_t m = out->unique_count, j = 0;
-    uint32_t *ids = fl_alloc_array(m, sizeof *ids);
+    uint32_t *ids = NULL;
     *order = fl_alloc_array(m, sizeof **order);
-    if (!ids || !*order) {
+    if (m < out->point_count) ids = fl_alloc_array(m, sizeof *ids);
+    if (!*order || (m < out->point_count && !ids)) {
         free(ids);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "no memory to order %zu points", m);
     }
-    for (size_t i = 0; i < out->point_count; i++)
+    for (size_t i = 0; ids && i < out->point_count; i++)
         if (out->duplicate_of[i] == i) ids[j++] = (uint32_t)i;
-    fl_status st = fl_dt_brio_order(xy, ids, m, 2, *order, err);
+    fl_status st = fl_dt_brio_order_in(xy, ids, m, 2, *order, scratch, scratch_bytes, err);
     free(ids);
     return st;
 }
 
-static fl_status triangulate(const double *xy, uint32_t *order, const fl_dt2_options *opt,
-                             fl_dt2 *out, fl_error *err)
+/* Takes ownership of `tri` (room for 2m triangles). */
+static fl_status triangulate(const double *xy, uint32_t *order, dt2_tri *tri,
+                             const fl_dt2_options *opt, fl_dt2 *out, fl_error *err)
 {
     size_t m = out->unique_count;
-    if (!choose_first_triangle(xy, order, m))
+    if (!choose_first_triangle(xy, order, m)) {
+        free(tri);
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
                        "all %zu distinct points are collinear: the Delaunay triangulation is "
                        "1-dimensional",
                        m);
+    }
     dt2_builder b;
     fl_status st = FL_OK;
-    if (builder_init(&b, xy, order, m)) {
+    if (builder_init(&b, xy, order, m, tri)) {
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "no memory to triangulate %zu points", m);
     } else {
         start_triangulation(&b, 0, 1, 2);
@@ -414,17 +453,27 @@ fl_status fl_dt2_build(const double *xy, size_t n, const fl_dt2_options *opt, fl
                        (unsigned)MAX_POINTS);
     out->point_count = n;
     out->duplicate_of = fl_alloc_array(n, sizeof *out->duplicate_of);
-    if (!out->duplicate_of && n > 0)
+    /* The triangle array, sized for n distinct points (pages never touched cost nothing), is
+     * first lent as scratch to the duplicate detection and the sort. */
+    size_t work_bytes = (n > 2 ? 2 * n : 1) * sizeof(dt2_tri);
+    dt2_tri *work = fl_alloc_array(n > 2 ? 2 * n : 1, sizeof *work);
+    if ((!out->duplicate_of && n > 0) || !work) {
+        free(work);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "no memory for %zu points", n);
-    fl_status st = fl_dt_unique(xy, n, 2, out->duplicate_of, &out->unique_count, err);
+    }
+    fl_status st =
+        fl_dt_unique_in(xy, n, 2, out->duplicate_of, &out->unique_count, work, work_bytes, err);
     if (st == FL_OK && out->unique_count < 3)
         st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
                      "a 2D Delaunay triangulation needs at least 3 distinct points, got %zu "
                      "(of %zu input points)",
                      out->unique_count, n);
     uint32_t *order = NULL;
-    if (st == FL_OK) st = insertion_order(xy, out, &order, err);
-    if (st == FL_OK) st = triangulate(xy, order, opt, out, err);
+    if (st == FL_OK) st = insertion_order(xy, out, work, work_bytes, &order, err);
+    if (st == FL_OK)
+        st = triangulate(xy, order, work, opt, out, err);
+    else
+        free(work);
     free(order);
     if (st == FL_OK) fl_progress(opt->progress, opt->progress_user, "delaunay 2d", 1.0);
     if (st != FL_OK) fl_dt2_free(out);

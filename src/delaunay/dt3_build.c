@@ -14,7 +14,7 @@ static const char *stage_name(int weighted)
 
 static fl_status check_input(const double *in, size_t n, int stride, fl_error *err)
 {
-    if (n > (size_t)UINT32_MAX - 2)
+    if (n > (size_t)UINT32_MAX - 2 || n > SIZE_MAX / (4 * sizeof(double)))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "%zu points: at most 4294967293 are supported",
                        n);
     if (n && !in) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "the point array is NULL");
@@ -95,19 +95,37 @@ static fl_status first_tetrahedron(const double *pts, int stride, size_t n, uint
     return FL_OK;
 }
 
+/* Appends the caller's indices of the local points in `local` to `hidden`. */
+static fl_status report_hidden(const dt3_mesh *m, const fl_vec *local, fl_vec *hidden,
+                               fl_error *err)
+{
+    for (size_t k = 0; k < local->count; k++) {
+        uint32_t g = m->gid[((const uint32_t *)local->data)[k]];
+        if (fl_vec_push(hidden, &g, 1) != 0)
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    }
+    return FL_OK;
+}
+
+/* Inserts every point but the first tetrahedron's, in order. A ball can be hidden on arrival
+ * (DT3_REDUNDANT) or later, swallowed by another ball's cavity; both are reported. A point
+ * never is redundant without weights (its containing tetrahedron's circumsphere contains it):
+ * that is reported as an internal error rather than trusted. */
 static fl_status insert_all(dt3_mesh *m, size_t n, const uint32_t v[4], fl_progress_fn progress,
                             void *user, fl_vec *hidden, fl_error *err)
 {
     fl_vec swallowed;
     fl_vec_init(&swallowed, sizeof(uint32_t));
     fl_status st = FL_OK;
+    const char *stage = stage_name(m->weighted);
     for (size_t i = 2; i < n && st == FL_OK; i++) {
         if (i == v[2] || i == v[3]) continue;
-        if ((i & 0x3fff) == 0 &&
-            fl_progress(progress, user, stage_name(m->weighted), (double)i / (double)n))
+        if ((i & 0x3fff) == 0 && fl_progress(progress, user, stage, (double)i / (double)n)) {
             st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+            break;
+        }
         swallowed.count = 0;
-        dt3_insert_result r = st == FL_OK ? dt3_insert(m, (uint32_t)i, &swallowed) : DT3_INSERTED;
+        dt3_insert_result r = dt3_insert(m, (uint32_t)i, &swallowed);
         if (r == DT3_NOMEM)
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1,
                          "out of memory after %zu of %zu points (the store holds at most 2^30 "
@@ -116,16 +134,12 @@ static fl_status insert_all(dt3_mesh *m, size_t n, const uint32_t v[4], fl_progr
         else if (r == DT3_REDUNDANT && !m->weighted)
             st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
                          "internal error: point %u is in conflict with no tetrahedron", m->gid[i]);
-        else if (r == DT3_REDUNDANT && fl_vec_push(&swallowed, &(uint32_t){(uint32_t)i}, 1))
+        else if (r == DT3_REDUNDANT && fl_vec_push(&swallowed, &(uint32_t){(uint32_t)i}, 1) != 0)
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-        for (size_t k = 0; k < swallowed.count && st == FL_OK; k++) {
-            uint32_t g = m->gid[((const uint32_t *)swallowed.data)[k]];
-            if (fl_vec_push(hidden, &g, 1) != 0)
-                st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-        }
+        if (st == FL_OK) st = report_hidden(m, &swallowed, hidden, err);
     }
     fl_vec_free(&swallowed);
-    if (st == FL_OK) fl_progress(progress, user, stage_name(m->weighted), 1.0);
+    if (st == FL_OK) fl_progress(progress, user, stage, 1.0);
     return st;
 }
 
@@ -163,14 +177,14 @@ static void orthogonal_ball(const double *const p[4], int weighted, double out[4
  * counterclockwise seen from outside. */
 static void fill_hull_face(const dt3_mesh *m, uint32_t s, uint32_t *face)
 {
-    const uint32_t *v = m->tv + 4 * (size_t)s;
+    const uint32_t *v = dt3_v(m, s);
     int k = 0;
     while (v[k] != DT3_INF)
         k++;
-    uint32_t link = m->tn[4 * (size_t)s + k], f = link >> 2;
+    uint32_t link = dt3_n(m, s)[k], f = link >> 2;
     const int *c = dt3_face_corners[link & 3];
     for (int i = 0; i < 3; i++)
-        face[i] = m->gid[m->tv[4 * (size_t)f + c[i]]];
+        face[i] = m->gid[dt3_v(m, f)[c[i]]];
 }
 
 /* Hull faces and centres: everything that needs the store in local numbering. */
@@ -184,7 +198,7 @@ static fl_status extract_extras(const dt3_mesh *m, const uint32_t *newid, int wa
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu tetrahedra",
                        out->tet_count);
     for (size_t s = 0, h = 0; s < m->slots; s++) {
-        const uint32_t *v = m->tv + 4 * s;
+        const uint32_t *v = dt3_v(m, s);
         if (newid[s] == DT3_NONE && v[0] != DT3_DEAD)
             fill_hull_face(m, (uint32_t)s, out->hull_faces + 3 * h++);
         if (newid[s] == DT3_NONE || !want_centers) continue;
@@ -200,23 +214,27 @@ static fl_status extract_extras(const dt3_mesh *m, const uint32_t *newid, int wa
 
 /* Turns the store into the output in place: finite tetrahedra are moved down to their new
  * index (never above their slot, so nothing unread is overwritten), corners become caller
- * indices and links become tetrahedron indices. The store then belongs to out. */
-static void compact_store(dt3_mesh *m, const uint32_t *newid, dt3_output *out)
+ * indices and links become tetrahedron indices; then the links are copied out and the corners
+ * packed 4 a tetrahedron. The store's block becomes out->tet. */
+static fl_status compact_store(dt3_mesh *m, const uint32_t *newid, dt3_output *out, fl_error *err)
 {
+    size_t nt = out->tet_count;
+    out->adj = fl_alloc_array(nt, 4 * sizeof *out->adj);
+    if (!out->adj)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu tetrahedra", nt);
     for (size_t s = 0; s < m->slots; s++) {
         size_t d = newid[s];
         if (d == DT3_NONE) continue;
-        for (int k = 0; k < 4; k++) {
-            m->tv[4 * d + k] = m->gid[m->tv[4 * s + k]];
-            m->tn[4 * d + k] = newid[m->tn[4 * s + k] >> 2];
-        }
+        const uint32_t *v = dt3_v(m, s), *n = dt3_n(m, s);
+        for (int k = 0; k < 4; k++)
+            out->adj[4 * d + k] = newid[n[k] >> 2];
+        uint32_t g[4] = {m->gid[v[0]], m->gid[v[1]], m->gid[v[2]], m->gid[v[3]]};
+        memcpy(m->cell + 4 * d, g, sizeof g);
     }
-    size_t nt = out->tet_count ? out->tet_count : 1;
-    uint32_t *tv = fl_realloc_array(m->tv, nt, 4 * sizeof *tv);
-    uint32_t *tn = fl_realloc_array(m->tn, nt, 4 * sizeof *tn);
-    out->tet = tv ? tv : m->tv; /* a failed shrink keeps the larger block */
-    out->adj = tn ? tn : m->tn;
-    m->tv = m->tn = NULL;
+    uint32_t *tet = fl_realloc_array(m->cell, nt ? nt : 1, 4 * sizeof *tet);
+    out->tet = tet ? tet : m->cell; /* a failed shrink keeps the larger block */
+    m->cell = NULL;
+    return FL_OK;
 }
 
 static fl_status extract(dt3_mesh *m, int want_centers, dt3_output *out, fl_error *err)
@@ -226,14 +244,14 @@ static fl_status extract(dt3_mesh *m, int want_centers, dt3_output *out, fl_erro
     out->tet_count = out->hull_face_count = 0;
     for (size_t s = 0; s < m->slots; s++) {
         newid[s] = DT3_NONE;
-        if (m->tv[4 * s] == DT3_DEAD) continue;
+        if (dt3_v(m, s)[0] == DT3_DEAD) continue;
         if (dt3_is_infinite(m, (uint32_t)s))
             out->hull_face_count++;
         else
             newid[s] = (uint32_t)out->tet_count++;
     }
     fl_status st = extract_extras(m, newid, want_centers, out, err);
-    if (st == FL_OK) compact_store(m, newid, out);
+    if (st == FL_OK) st = compact_store(m, newid, out, err);
     free(newid);
     return st;
 }

@@ -1,7 +1,7 @@
 /* Internal interface of the 3D Delaunay and regular triangulations (dt3_*.c, rt3.c).
  *
  * The triangulation is kept as a flat tetrahedron store: tetrahedron t has vertices
- * tv[4t..4t+3] and neighbours tn[4t..4t+3], where tn[4t+k] = (u << 2) | j means that the face
+ * dt3_v(m, t)[0..3] and links dt3_n(m, t)[0..3], where link k = (u << 2) | j means that the face
  * opposite corner k of t is the face opposite corner j of u. Every tetrahedron is positively
  * oriented in Shewchuk's convention, fl_orient3d(v0, v1, v2, v3) > 0. The convex hull is closed
  * by "infinite" tetrahedra that have the vertex DT3_INF in one corner, so every tetrahedron has
@@ -16,7 +16,7 @@
 #include "core/core.h"
 
 #define DT3_INF UINT32_MAX        /* the infinite vertex */
-#define DT3_DEAD (UINT32_MAX - 1) /* tv[4t] of a tetrahedron on the free list */
+#define DT3_DEAD (UINT32_MAX - 1) /* first corner of a tetrahedron on the free list */
 #define DT3_NONE UINT32_MAX       /* no tetrahedron */
 /* Neighbour links pack a tetrahedron index and a corner into 32 bits. */
 #define DT3_MAX_TETS (((size_t)1 << 30) - 1) /* so that no link equals DT3_NONE */
@@ -30,10 +30,11 @@ typedef struct dt3_mesh {
     int stride;          /* 3 for points, 4 for weighted points (x, y, z, w) */
     int weighted;        /* power test instead of in-sphere test */
     const uint32_t *gid; /* local index -> caller's index: the perturbation priority */
-    uint32_t *tv, *tn;   /* 4 per tetrahedron slot */
+    uint32_t *cell;      /* 8 per tetrahedron slot: 4 corners, then 4 links (one cache line
+                            for half a pair of tetrahedra: a face test reads both) */
     uint8_t *mark;       /* per slot, 0 between insertions */
     size_t slots, cap;   /* slots in use (live or free), slots allocated */
-    uint32_t free_head;  /* free list chained through tn[4t] */
+    uint32_t free_head;  /* free list chained through the first link */
     uint32_t last;       /* a live tetrahedron: where the next walk starts */
     uint64_t rng;        /* xorshift state for the stochastic walk */
     fl_vec cavity;       /* uint32 tetrahedra in conflict */
@@ -42,6 +43,15 @@ typedef struct dt3_mesh {
     fl_vec created;      /* uint32 tetrahedra created by the current insertion */
     uint32_t *vstamp;    /* weighted only: per point, to find vertices the cavity swallowed */
 } dt3_mesh;
+
+static inline uint32_t *dt3_v(const dt3_mesh *m, size_t t)
+{
+    return m->cell + 8 * t;
+}
+static inline uint32_t *dt3_n(const dt3_mesh *m, size_t t)
+{
+    return m->cell + 8 * t + 4;
+}
 
 /* Result of inserting one point. */
 typedef enum dt3_insert_result { DT3_INSERTED, DT3_REDUNDANT, DT3_NOMEM } dt3_insert_result;
@@ -59,7 +69,7 @@ dt3_insert_result dt3_insert(dt3_mesh *m, uint32_t p, fl_vec *hidden);
 /* Is the tetrahedron slot t infinite / live? */
 static inline int dt3_is_infinite(const dt3_mesh *m, uint32_t t)
 {
-    const uint32_t *v = m->tv + 4 * (size_t)t;
+    const uint32_t *v = dt3_v(m, t);
     return v[0] == DT3_INF || v[1] == DT3_INF || v[2] == DT3_INF || v[3] == DT3_INF;
 }
 
@@ -81,14 +91,6 @@ static inline int dt3_power_sos(int weighted, const double *a, const double *b, 
     return weighted ? fl_insphere_weighted_sos(a, b, c, d, e, ga, gb, gc, gd, ge)
                     : fl_insphere_sos(a, b, c, d, e, ga, gb, gc, gd, ge);
 }
-
-/* Finds, for the new point q, a tetrahedron in conflict with it or the tetrahedron whose closed
- * region contains it: a finite tetrahedron containing q, or an infinite one whose hull face q
- * sees strictly. */
-uint32_t dt3_locate(dt3_mesh *m, const double *q);
-
-/* Is point p in conflict with tetrahedron t (finite or infinite)? */
-int dt3_in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p);
 
 /* What dt3_build produces; dt3.c and rt3.c move it into their public structs. */
 typedef struct dt3_output {

@@ -21,12 +21,9 @@ static int grow_store(dt3_mesh *m, size_t need)
     while (cap < need)
         cap = cap + cap / 2;
     if (cap > DT3_MAX_TETS) cap = DT3_MAX_TETS;
-    uint32_t *tv = fl_realloc_array(m->tv, cap, 4 * sizeof *tv);
-    if (!tv) return -1;
-    m->tv = tv;
-    uint32_t *tn = fl_realloc_array(m->tn, cap, 4 * sizeof *tn);
-    if (!tn) return -1;
-    m->tn = tn;
+    uint32_t *cell = fl_realloc_array(m->cell, cap, 8 * sizeof *cell);
+    if (!cell) return -1;
+    m->cell = cell;
     uint8_t *mark = fl_realloc_array(m->mark, cap, 1);
     if (!mark) return -1;
     memset(mark + m->cap, 0, cap - m->cap);
@@ -40,7 +37,7 @@ static uint32_t new_tet(dt3_mesh *m)
 {
     if (m->free_head != DT3_NONE) {
         uint32_t t = m->free_head;
-        m->free_head = m->tn[4 * (size_t)t];
+        m->free_head = dt3_n(m, t)[0];
         return t;
     }
     if (grow_store(m, m->slots + 1) != 0) return DT3_NONE;
@@ -49,15 +46,15 @@ static uint32_t new_tet(dt3_mesh *m)
 
 static void free_tet(dt3_mesh *m, uint32_t t)
 {
-    m->tv[4 * (size_t)t] = DT3_DEAD;
-    m->tn[4 * (size_t)t] = m->free_head;
+    dt3_v(m, t)[0] = DT3_DEAD;
+    dt3_n(m, t)[0] = m->free_head;
     m->free_head = t;
 }
 
 static void link(dt3_mesh *m, uint32_t t, int k, uint32_t u, int j)
 {
-    m->tn[4 * (size_t)t + k] = (u << 2) | (uint32_t)j;
-    m->tn[4 * (size_t)u + j] = (t << 2) | (uint32_t)k;
+    dt3_n(m, t)[k] = (u << 2) | (uint32_t)j;
+    dt3_n(m, u)[j] = (t << 2) | (uint32_t)k;
 }
 
 /* Links the tetrahedra t[0..count) to each other wherever they share a face (by comparing
@@ -68,7 +65,7 @@ static void link_by_search(dt3_mesh *m, const uint32_t *t, int count)
         for (int j = i + 1; j < count; j++)
             for (int k = 0; k < 4; k++)
                 for (int l = 0; l < 4; l++) {
-                    const uint32_t *a = m->tv + 4 * (size_t)t[i], *b = m->tv + 4 * (size_t)t[j];
+                    const uint32_t *a = dt3_v(m, t[i]), *b = dt3_v(m, t[j]);
                     int shared = 0;
                     for (int x = 0; x < 4; x++)
                         for (int y = 0; y < 4; y++)
@@ -94,11 +91,11 @@ int dt3_mesh_init(dt3_mesh *m, const uint32_t v[4], size_t expected_points)
     }
     uint32_t t[5];
     t[0] = new_tet(m);
-    memcpy(m->tv, q, sizeof q);
+    memcpy(dt3_v(m, t[0]), q, sizeof q);
     for (int k = 0; k < 4; k++) {
         /* Replace corner k by the infinite vertex and swap two other corners: the infinite
          * vertex then lies on the far side of face k, as the orientation convention asks. */
-        uint32_t u = new_tet(m), *w = m->tv + 4 * (size_t)u;
+        uint32_t u = new_tet(m), *w = dt3_v(m, u);
         memcpy(w, q, sizeof q);
         w[k] = DT3_INF;
         uint32_t tmp = w[(k + 1) & 3];
@@ -113,8 +110,7 @@ int dt3_mesh_init(dt3_mesh *m, const uint32_t v[4], size_t expected_points)
 
 void dt3_mesh_free(dt3_mesh *m)
 {
-    free(m->tv);
-    free(m->tn);
+    free(m->cell);
     free(m->mark);
     free(m->vstamp);
     fl_vec_free(&m->cavity);
@@ -128,7 +124,7 @@ void dt3_mesh_free(dt3_mesh *m)
  * of face k as corner k (for the infinite corner: strictly outside the hull face). */
 static int orient_replaced(const dt3_mesh *m, uint32_t t, int k, const double *q)
 {
-    const uint32_t *v = m->tv + 4 * (size_t)t;
+    const uint32_t *v = dt3_v(m, t);
     const double *p[4];
     for (int i = 0; i < 4; i++)
         p[i] = i == k ? q : pt(m, v[i]);
@@ -137,27 +133,31 @@ static int orient_replaced(const dt3_mesh *m, uint32_t t, int k, const double *q
 
 static int inf_corner(const dt3_mesh *m, uint32_t t)
 {
-    const uint32_t *v = m->tv + 4 * (size_t)t;
+    const uint32_t *v = dt3_v(m, t);
     for (int i = 0; i < 4; i++)
         if (v[i] == DT3_INF) return i;
     return -1;
 }
 
-uint32_t dt3_locate(dt3_mesh *m, const double *q)
+/* Finds, for the new point q, a tetrahedron whose closed region contains it (finite), or an
+ * infinite one whose hull face q sees strictly. */
+static uint32_t locate(dt3_mesh *m, const double *q)
 {
     uint32_t t = m->last, prev = DT3_NONE;
     int k = inf_corner(m, t);
-    if (k >= 0) t = m->tn[4 * (size_t)t + k] >> 2;
+    if (k >= 0) t = dt3_n(m, t)[k] >> 2;
     for (;;) {
-        /* Visibility walk; starting at a random face (and never stepping back) keeps it from
-         * cycling (Devillers, Pion, Teillaud: "Walking in a triangulation"). */
+        /* Visibility walk, crossing a face only when q is strictly beyond it. Starting at a
+         * random face makes it terminate with probability 1 on any triangulation; not stepping
+         * straight back saves a test (Devillers, Pion, Teillaud: "Walking in a
+         * triangulation", the remembering stochastic walk). */
         m->rng ^= m->rng << 13;
         m->rng ^= m->rng >> 7;
         m->rng ^= m->rng << 17;
         int start = (int)(m->rng >> 62), moved = 0;
         for (int i = 0; i < 4 && !moved; i++) {
             k = (start + i) & 3;
-            uint32_t u = m->tn[4 * (size_t)t + k] >> 2;
+            uint32_t u = dt3_n(m, t)[k] >> 2;
             if (u == prev || orient_replaced(m, t, k, q) >= 0) continue;
             prev = t;
             t = u;
@@ -167,9 +167,9 @@ uint32_t dt3_locate(dt3_mesh *m, const double *q)
     }
 }
 
-static int finite_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
+static inline int finite_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
 {
-    const uint32_t *v = m->tv + 4 * (size_t)t;
+    const uint32_t *v = dt3_v(m, t);
     const double *a = pt(m, v[0]), *b = pt(m, v[1]), *c = pt(m, v[2]), *d = pt(m, v[3]);
     /* The unperturbed test first: it decides almost always, without loading the indices. */
     int s = m->weighted ? fl_insphere_weighted(a, b, c, d, pt(m, p))
@@ -180,7 +180,8 @@ static int finite_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
     return s > 0;
 }
 
-int dt3_in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
+/* Is point p in conflict with tetrahedron t (finite or infinite)? */
+static inline int in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
 {
     int k = inf_corner(m, t);
     if (k < 0) return finite_conflict(m, t, p);
@@ -191,14 +192,11 @@ int dt3_in_conflict(const dt3_mesh *m, uint32_t t, uint32_t p)
      * circumcircle: conflict iff p is inside that circle, with the same tie-break as the finite
      * tetrahedron. So the two tetrahedra on the face are in the cavity together or not at all,
      * and the cavity never produces a flat tetrahedron (face, p). */
-    return finite_conflict(m, m->tn[4 * (size_t)t + k] >> 2, p);
+    return finite_conflict(m, dt3_n(m, t)[k] >> 2, p);
 }
 
 /* ---- Bowyer-Watson insertion ---- */
 
-/* Breadth-first search of the tetrahedra in conflict with p from t (which is). The conflict
- * region is connected: it is the set of lower-hull facets visible from the lifted p. Marks:
- * 1 in the cavity, 2 tested and not in conflict. */
 /* fl_vec_push of one uint32 without the call in the common case. */
 static inline int push_u32(fl_vec *v, uint32_t x)
 {
@@ -207,6 +205,10 @@ static inline int push_u32(fl_vec *v, uint32_t x)
     return 0;
 }
 
+/* Breadth-first search of the tetrahedra in conflict with p from t (which is). The conflict
+ * region is connected: it is the set of lower-hull facets visible from the lifted p. Marks:
+ * 1 in the cavity, 2 tested and not in conflict; boundary collects the cavity faces (t << 2 | k)
+ * whose neighbour is not in conflict. */
 static int find_cavity(dt3_mesh *m, uint32_t t, uint32_t p)
 {
     m->cavity.count = m->touched.count = m->boundary.count = 0;
@@ -215,9 +217,9 @@ static int find_cavity(dt3_mesh *m, uint32_t t, uint32_t p)
     for (size_t i = 0; i < m->cavity.count; i++) {
         uint32_t c = ((const uint32_t *)m->cavity.data)[i];
         for (int k = 0; k < 4; k++) {
-            uint32_t u = m->tn[4 * (size_t)c + k] >> 2;
+            uint32_t u = dt3_n(m, c)[k] >> 2;
             if (m->mark[u] == 0) {
-                int in = dt3_in_conflict(m, u, p);
+                int in = in_conflict(m, u, p);
                 m->mark[u] = in ? 1 : 2;
                 if (push_u32(in ? &m->cavity : &m->touched, u) != 0) return -1;
             }
@@ -243,7 +245,7 @@ static int third_corner(const uint32_t *v, int skip, uint32_t a, uint32_t b)
  * Corner j of c is the corner of the boundary face off ab. Returns (tetrahedron << 2 | corner). */
 static uint32_t across_edge(const dt3_mesh *m, uint32_t c, int k, int j)
 {
-    const uint32_t *cv = m->tv + 4 * (size_t)c;
+    const uint32_t *cv = dt3_v(m, c);
     int ia = 0;
     while (ia == j || ia == k)
         ia++;
@@ -251,12 +253,12 @@ static uint32_t across_edge(const dt3_mesh *m, uint32_t c, int k, int j)
     uint32_t cur = c;
     int exit = j; /* leave cur through its face opposite `exit`, the other face on ab */
     for (;;) {
-        uint32_t link = m->tn[4 * (size_t)cur + exit], n = link >> 2;
-        const uint32_t *v = m->tv + 4 * (size_t)cur;
+        uint32_t link = dt3_n(m, cur)[exit], n = link >> 2;
+        const uint32_t *v = dt3_v(m, cur);
         int w = third_corner(v, exit, a, b);
         if (m->mark[n] != 1) /* n is the new tetrahedron on (cur, exit), laid out like cur */
             return (n << 2) | (uint32_t)w;
-        const uint32_t *nv = m->tv + 4 * (size_t)n;
+        const uint32_t *nv = dt3_v(m, n);
         int e = 0;
         while (nv[e] != v[w])
             e++;
@@ -277,20 +279,20 @@ static int fill_cavity(dt3_mesh *m, uint32_t p)
     for (size_t i = 0; i < nb; i++) {
         uint32_t c = bf[i] >> 2, u = new_tet(m);
         int k = (int)(bf[i] & 3);
-        uint32_t outer = m->tn[4 * (size_t)c + k];
-        memcpy(m->tv + 4 * (size_t)u, m->tv + 4 * (size_t)c, 4 * sizeof(uint32_t));
-        m->tv[4 * (size_t)u + k] = p;
+        uint32_t outer = dt3_n(m, c)[k];
+        memcpy(dt3_v(m, u), dt3_v(m, c), 4 * sizeof(uint32_t));
+        dt3_v(m, u)[k] = p;
         for (int j = 0; j < 4; j++)
-            m->tn[4 * (size_t)u + j] = DT3_NONE;
+            dt3_n(m, u)[j] = DT3_NONE;
         link(m, u, k, outer >> 2, (int)(outer & 3));
-        m->tn[4 * (size_t)c + k] = (u << 2) | (uint32_t)k; /* the cavity is discarded */
+        dt3_n(m, c)[k] = (u << 2) | (uint32_t)k; /* the cavity is discarded */
         created[i] = u;
     }
     for (size_t i = 0; i < nb; i++) {
         uint32_t c = bf[i] >> 2, u = created[i];
         int k = (int)(bf[i] & 3);
         for (int j = 0; j < 4; j++)
-            if (j != k && m->tn[4 * (size_t)u + j] == DT3_NONE) {
+            if (j != k && dt3_n(m, u)[j] == DT3_NONE) {
                 uint32_t other = across_edge(m, c, k, j);
                 link(m, u, j, other >> 2, (int)(other & 3));
             }
@@ -305,12 +307,12 @@ static int collect_hidden(dt3_mesh *m, uint32_t p, fl_vec *hidden)
     uint32_t stamp = p + 1;
     const uint32_t *bf = m->boundary.data, *cav = m->cavity.data;
     for (size_t i = 0; i < m->boundary.count; i++) {
-        const uint32_t *v = m->tv + 4 * (size_t)(bf[i] >> 2);
+        const uint32_t *v = dt3_v(m, bf[i] >> 2);
         for (int j = 0; j < 4; j++)
             if (j != (int)(bf[i] & 3) && v[j] != DT3_INF) m->vstamp[v[j]] = stamp;
     }
     for (size_t i = 0; i < m->cavity.count; i++) {
-        const uint32_t *v = m->tv + 4 * (size_t)cav[i];
+        const uint32_t *v = dt3_v(m, cav[i]);
         for (int j = 0; j < 4; j++) {
             if (v[j] == DT3_INF || m->vstamp[v[j]] == stamp) continue;
             m->vstamp[v[j]] = stamp;
@@ -322,8 +324,8 @@ static int collect_hidden(dt3_mesh *m, uint32_t p, fl_vec *hidden)
 
 dt3_insert_result dt3_insert(dt3_mesh *m, uint32_t p, fl_vec *hidden)
 {
-    uint32_t t = dt3_locate(m, pt(m, p));
-    if (!dt3_in_conflict(m, t, p)) return DT3_REDUNDANT;
+    uint32_t t = locate(m, pt(m, p));
+    if (!in_conflict(m, t, p)) return DT3_REDUNDANT;
     int fail = find_cavity(m, t, p);
     if (!fail && m->weighted) fail = collect_hidden(m, p, hidden);
     if (!fail) fail = fill_cavity(m, p);

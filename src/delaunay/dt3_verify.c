@@ -299,6 +299,8 @@ fl_status dt3_verify_hidden(const double *in, size_t n, size_t hidden_count, con
                             fl_error *err)
 {
     vctx c = {in, n, 4, 1, tet_count, tet, adj};
+    if (hidden_count && !tet_count)
+        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "hidden balls but no tetrahedra");
     for (size_t i = 0; i < hidden_count; i++) {
         uint32_t h = hidden[i];
         if (h >= n || (i > 0 && h <= hidden[i - 1]))

@@ -13,9 +13,8 @@
 
 #include "delaunay/delaunay_internal.h"
 
-/* The last BRIO round holds 1 - 1/BRIO_RATIO_DIV of the points still unplaced; rounds smaller
- * than BRIO_MIN_ROUND are merged into the first round. CGAL's multiscale sort uses the same 1/8. */
-#define BRIO_RATIO_DIV 8
+/* BRIO rounds (see brio_round): each holds about 7/8 of the points not in a later round, as in
+ * CGAL's multiscale sort; rounds expected to be smaller than BRIO_MIN_ROUND merge. */
 #define BRIO_MIN_ROUND 64
 #define BRIO_SEED 0x5DEECE66DULL
 
@@ -75,16 +74,35 @@ static int same_point(const double *a, const double *b, int dim)
     return 1;
 }
 
+/* Hash table slots for n points: a power of two, at least 2n (load factor <= 1/2). */
+static size_t unique_table_slots(size_t n)
+{
+    size_t cap = 16;
+    while (cap < 2 * n)
+        cap *= 2;
+    return cap;
+}
+
+size_t fl_dt_unique_scratch_bytes(size_t n)
+{
+    return n > SIZE_MAX / 16 ? SIZE_MAX : unique_table_slots(n) * sizeof(uint32_t);
+}
+
 fl_status fl_dt_unique(const double *coords, size_t n, int dim, uint32_t *rep, size_t *unique_count,
                        fl_error *err)
+{
+    return fl_dt_unique_in(coords, n, dim, rep, unique_count, NULL, 0, err);
+}
+
+fl_status fl_dt_unique_in(const double *coords, size_t n, int dim, uint32_t *rep,
+                          size_t *unique_count, void *scratch, size_t scratch_bytes, fl_error *err)
 {
     fl_status st = check_args(coords, n, dim, rep, err);
     if (st != FL_OK) return st;
     if (!unique_count) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "NULL unique_count");
-    size_t cap = 16;
-    while (cap < 2 * n)
-        cap *= 2;
-    uint32_t *table = fl_alloc_array(cap, sizeof *table);
+    size_t cap = unique_table_slots(n);
+    int own = !scratch || scratch_bytes < fl_dt_unique_scratch_bytes(n);
+    uint32_t *table = own ? fl_alloc_array(cap, sizeof *table) : scratch;
     if (!table)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1,
                        "no memory for duplicate detection (%zu points)", n);
@@ -105,24 +123,14 @@ fl_status fl_dt_unique(const double *coords, size_t n, int dim, uint32_t *rep, s
         }
         rep[i] = table[slot];
     }
-    free(table);
+    if (own) free(table);
     if (st == FL_OK) *unique_count = unique;
     return st;
 }
 
 /* ---- Hilbert keys ----------------------------------------------------------------------- */
 
-/* Bit i of v moved to bit 2i (2D) or 3i (3D, v < 2^21): the interleaving of a Morton code. */
-static uint64_t spread2(uint32_t v)
-{
-    uint64_t x = v;
-    x = (x | x << 16) & 0x0000FFFF0000FFFFULL;
-    x = (x | x << 8) & 0x00FF00FF00FF00FFULL;
-    x = (x | x << 4) & 0x0F0F0F0F0F0F0F0FULL;
-    x = (x | x << 2) & 0x3333333333333333ULL;
-    return (x | x << 1) & 0x5555555555555555ULL;
-}
-
+/* Bit i of v (v < 2^21) moved to bit 3i: the interleaving of a 3D Morton code. */
 static uint64_t spread3(uint32_t v)
 {
     uint64_t x = v & 0x1FFFFFu;
@@ -154,22 +162,53 @@ static uint32_t gray_fix(uint32_t x, int bits)
     return t;
 }
 
-/* Hilbert index of a cell (each coordinate < 2^bits) by Skilling's transposition method
- * ("Programming the Hilbert curve", AIP Conf. Proc. 707, 2004): undo the excess rotations and
- * reflections level by level, Gray-encode, then interleave the bits, most significant first.
- * Written out per dimension so the coordinates stay in registers. */
-static uint64_t hilbert_key2(uint32_t x0, uint32_t x1)
+/* 2D: the Hilbert curve as a 4-state automaton read from the top bit down. In the canonical
+ * frame the curve visits the quadrants (x, y) = (0,0), (0,1), (1,1), (1,0) as digits 0..3, and
+ * the sub-curve of digit 0 is transposed, of digit 3 anti-transposed, of digits 1 and 2 as is.
+ * The frames (identity, transpose, anti-transpose, half turn) form the Klein group, coded so
+ * that composing two is XOR of their codes. hilbert2_table advances the automaton four levels
+ * (a nibble of each coordinate) per lookup: entry = (8 digit bits << 2) | next frame. */
+typedef uint16_t hilbert2_table[4][256];
+
+static void hilbert2_make_table(hilbert2_table table)
 {
-    for (int level = 31; level > 0; level--) {
-        uint32_t low = (1u << level) - 1;
-        HILBERT_UNDO(x0, x0, level, low);
-        HILBERT_UNDO(x0, x1, level, low);
-    }
-    x1 ^= x0;
-    uint32_t t = gray_fix(x1, 32);
-    return spread2(x0 ^ t) << 1 | spread2(x1 ^ t);
+    static const uint8_t digit[2][2] = {{0, 1}, {3, 2}}; /* digit[x][y], canonical frame */
+    static const uint8_t sub_frame[4] = {1, 0, 0, 2};
+    for (unsigned frame = 0; frame < 4; frame++)
+        for (unsigned nib = 0; nib < 256; nib++) {
+            unsigned f = frame, digits = 0;
+            for (int level = 3; level >= 0; level--) {
+                unsigned x = (nib >> (4 + level)) & 1, y = (nib >> level) & 1, cx = x, cy = y;
+                if (f & 1) { /* transpose or half turn: see the frame codes above */
+                    cx = f == 1 ? y : 1 - x;
+                    cy = f == 1 ? x : 1 - y;
+                } else if (f == 2) {
+                    cx = 1 - y;
+                    cy = 1 - x;
+                }
+                unsigned d = digit[cx][cy];
+                digits = digits << 2 | d;
+                f ^= sub_frame[d];
+            }
+            table[frame][nib] = (uint16_t)(digits << 2 | f);
+        }
 }
 
+static uint64_t hilbert_key2(const hilbert2_table table, uint32_t x, uint32_t y)
+{
+    uint64_t key = 0;
+    unsigned frame = 0;
+    for (int shift = 28; shift >= 0; shift -= 4) {
+        unsigned e = table[frame][((x >> shift) & 15) << 4 | ((y >> shift) & 15)];
+        key = key << 8 | e >> 2;
+        frame = e & 3;
+    }
+    return key;
+}
+
+/* 3D: Skilling's transposition method ("Programming the Hilbert curve", AIP Conf. Proc. 707,
+ * 2004): undo the excess rotations and reflections level by level, Gray-encode, then interleave
+ * the bits, most significant first. Written out so the coordinates stay in registers. */
 static uint64_t hilbert_key3(uint32_t x0, uint32_t x1, uint32_t x2)
 {
     for (int level = 20; level > 0; level--) {
@@ -214,7 +253,8 @@ static bbox bounding_box(const double *coords, const uint32_t *ids, size_t n, in
     return b;
 }
 
-static uint64_t point_key(const double *p, const bbox *b, int dim, int bits)
+static uint64_t point_key(const double *p, const bbox *b, const hilbert2_table table, int dim,
+                          int bits)
 {
     uint32_t cell[3];
     double max_cell = (double)((1ULL << bits) - 1);
@@ -222,7 +262,8 @@ static uint64_t point_key(const double *p, const bbox *b, int dim, int bits)
         double c = (0.5 * p[k] - 0.5 * b->lo[k]) * b->scale;
         cell[k] = (uint32_t)(c < max_cell ? c : max_cell);
     }
-    return dim == 2 ? hilbert_key2(cell[0], cell[1]) : hilbert_key3(cell[0], cell[1], cell[2]);
+    return dim == 2 ? hilbert_key2(table, cell[0], cell[1])
+                    : hilbert_key3(cell[0], cell[1], cell[2]);
 }
 
 /* ---- radix sort of (key, id) pairs --------------------------------------------------------- */
@@ -266,23 +307,36 @@ static void radix_sort(uint64_t *key, uint32_t *id, uint64_t *tkey, uint32_t *ti
 
 /* ---- BRIO -------------------------------------------------------------------------------- */
 
-/* Fisher-Yates shuffle of the pairs (key[i], id[i]). */
-static void shuffle(uint64_t *key, uint32_t *id, size_t n)
+/* The BRIO round of a point, 0 first: a point moves one round earlier with probability 1/8
+ * (three random bits all zero), at most `deepest` times; so the last round holds about 7/8 of
+ * the points, the one before 7/8 of the rest, ... (Amenta, Choi, Rote: each point's round is an
+ * independent random choice). The randomness is a hash of the id, so no shuffle (and none of
+ * its cache misses) is needed and the order is deterministic. */
+static uint64_t brio_round(uint32_t id, unsigned deepest)
 {
-    uint64_t state = BRIO_SEED;
-    for (size_t i = n; i > 1; i--) {
-        size_t j = (size_t)(splitmix64(&state) % i);
-        uint64_t k = key[i - 1];
-        key[i - 1] = key[j];
-        key[j] = k;
-        uint32_t t = id[i - 1];
-        id[i - 1] = id[j];
-        id[j] = t;
+    uint64_t state = BRIO_SEED ^ id, z = splitmix64(&state);
+    unsigned depth = 0;
+    while (depth < deepest && (z & 7) == 0) {
+        depth++;
+        z >>= 3;
     }
+    return deepest - depth;
+}
+
+size_t fl_dt_brio_scratch_bytes(size_t n)
+{
+    return n > SIZE_MAX / 20 ? SIZE_MAX : 20 * n; /* two 64-bit keys and one 32-bit id each */
 }
 
 fl_status fl_dt_brio_order(const double *coords, const uint32_t *ids, size_t n, int dim,
                            uint32_t *order_out, fl_error *err)
+{
+    return fl_dt_brio_order_in(coords, ids, n, dim, order_out, NULL, 0, err);
+}
+
+fl_status fl_dt_brio_order_in(const double *coords, const uint32_t *ids, size_t n, int dim,
+                              uint32_t *order_out, void *scratch, size_t scratch_bytes,
+                              fl_error *err)
 {
     fl_status st = check_args(coords, n, dim, order_out, err);
     if (st != FL_OK) return st;
@@ -292,33 +346,27 @@ fl_status fl_dt_brio_order(const double *coords, const uint32_t *ids, size_t n, 
         if (st != FL_OK) return st;
     }
     if (n == 0) return FL_OK;
-    uint64_t *key = fl_alloc_array(n, sizeof *key);
-    uint64_t *tkey = fl_alloc_array(n, sizeof *tkey);
-    uint32_t *tid = fl_alloc_array(n, sizeof *tid);
-    if (!key || !tkey || !tid) {
-        free(key);
-        free(tkey);
-        free(tid);
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "no memory to sort %zu points", n);
-    }
+    int own = !scratch || scratch_bytes < fl_dt_brio_scratch_bytes(n);
+    uint64_t *key = own ? fl_alloc_array(n, 20) : scratch;
+    if (!key) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "no memory to sort %zu points", n);
+    uint64_t *tkey = key + n;
+    uint32_t *tid = (uint32_t *)(tkey + n);
+    /* Rounds expected to hold fewer than BRIO_MIN_ROUND points merge into the first. */
+    unsigned deepest = 0;
+    while (deepest < 15 && (n >> (3 * (deepest + 1))) >= BRIO_MIN_ROUND)
+        deepest++;
     int bits = dim == 2 ? 32 : 21; /* dim * bits <= 64 */
     bbox box = bounding_box(coords, ids, n, dim, bits);
-    /* Keys in input order (sequential reads of the coordinates), then shuffled with the ids. */
+    hilbert2_table table;
+    if (dim == 2) hilbert2_make_table(table);
+    /* One sort by (round, Hilbert index): the round takes the top 4 bits, the Hilbert key keeps
+     * its leading 60 (30 bits per axis in 2D, 20 in 3D). */
     for (size_t i = 0; i < n; i++) {
         order_out[i] = ids ? ids[i] : (uint32_t)i;
-        key[i] = point_key(coords + (size_t)order_out[i] * dim, &box, dim, bits);
+        uint64_t h = point_key(coords + (size_t)order_out[i] * dim, &box, table, dim, bits);
+        key[i] = brio_round(order_out[i], deepest) << 60 | h >> 4;
     }
-    shuffle(key, order_out, n);
-    /* Rounds from last to first: [m/8, m) is a round, then recurse on [0, m/8). */
-    size_t m = n;
-    while (m / BRIO_RATIO_DIV >= BRIO_MIN_ROUND) {
-        size_t k = m / BRIO_RATIO_DIV;
-        radix_sort(key + k, order_out + k, tkey, tid, m - k);
-        m = k;
-    }
-    radix_sort(key, order_out, tkey, tid, m);
-    free(key);
-    free(tkey);
-    free(tid);
+    radix_sort(key, order_out, tkey, tid, n);
+    if (own) free(key);
     return FL_OK;
 }

@@ -212,3 +212,25 @@ void fl_mesh_build_free(fl_mesh_build *b)
     fl_vec_free(&b->xyz);
     fl_vec_free(&b->tri);
 }
+
+fl_status fl_mesh_build_text_vertex(fl_mesh_build *b, const char *p, const char *e,
+                                    const char *what, const char *name, long line, fl_error *err)
+{
+    double v[3];
+    char q[64];
+    for (int k = 0; k < 3; k++) {
+        const char *tok;
+        size_t len;
+        if (!fl_token_next(&p, e, &tok, &len))
+            return fl_fail(err, FL_ERR_INPUT, name, line,
+                           "%s needs 3 coordinates, this line has %d", what, k);
+        if (fl_parse_double(tok, len, &v[k]))
+            return fl_fail(err, FL_ERR_INPUT, name, line, "expected a coordinate, got %s",
+                           fl_token_quote(tok, len, q, sizeof q));
+        if (!isfinite(v[k]))
+            return fl_fail(err, FL_ERR_INPUT, name, line, "coordinate %s is not a finite number",
+                           fl_token_quote(tok, len, q, sizeof q));
+    }
+    fl_status st = fl_mesh_build_vertex(b, v[0], v[1], v[2]);
+    return st ? fl_fail(err, st, name, line, "%s", fl_mesh_build_why(st)) : FL_OK;
+}

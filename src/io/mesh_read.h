@@ -67,4 +67,10 @@ const char *fl_mesh_build_why(fl_status status);
 void fl_mesh_build_finish(fl_mesh_build *b, fl_mesh *out);
 void fl_mesh_build_free(fl_mesh_build *b);
 
+/* Reads "x y z" from the tokens of one text line [p, e) (further tokens are left alone) and adds
+ * the vertex. `what` names the element in messages ("'v'", "a vertex"); errors name the file
+ * and line: too few coordinates, a token that is not a number, NaN or infinity. */
+fl_status fl_mesh_build_text_vertex(fl_mesh_build *b, const char *p, const char *e,
+                                    const char *what, const char *name, long line, fl_error *err);
+
 #endif /* FL_IO_MESH_READ_H */

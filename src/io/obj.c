@@ -24,28 +24,6 @@ typedef struct obj_reader {
     long max_index_line; /* where it occurred */
 } obj_reader;
 
-static fl_status obj_vertex(obj_reader *r, const char *p, const char *e, long line)
-{
-    double v[3];
-    char q[64];
-    for (int k = 0; k < 3; k++) {
-        const char *tok;
-        size_t len;
-        if (!fl_token_next(&p, e, &tok, &len))
-            return fl_fail(r->err, FL_ERR_INPUT, r->name, line,
-                           "'v' needs 3 coordinates, this line has %d", k);
-        if (fl_parse_double(tok, len, &v[k]))
-            return fl_fail(r->err, FL_ERR_INPUT, r->name, line, "expected a coordinate, got %s",
-                           fl_token_quote(tok, len, q, sizeof q));
-        if (!isfinite(v[k]))
-            return fl_fail(r->err, FL_ERR_INPUT, r->name, line,
-                           "coordinate %s is not a finite number",
-                           fl_token_quote(tok, len, q, sizeof q));
-    }
-    fl_status st = fl_mesh_build_vertex(&r->mb, v[0], v[1], v[2]);
-    return st ? fl_fail(r->err, st, r->name, line, "%s", fl_mesh_build_why(st)) : FL_OK;
-}
-
 /* One face reference: the vertex index before the first '/', made 0-based. */
 static fl_status obj_reference(obj_reader *r, const char *tok, size_t len, long line,
                                uint32_t *index)
@@ -118,7 +96,7 @@ static fl_status obj_read(obj_reader *r, const char *data, size_t size)
         if (hash) e = hash;
         if (!fl_token_next(&b, e, &tok, &len)) continue;
         if (fl_token_is(tok, len, "v"))
-            st = obj_vertex(r, b, e, line);
+            st = fl_mesh_build_text_vertex(&r->mb, b, e, "'v'", r->name, line, r->err);
         else if (fl_token_is(tok, len, "f"))
             st = obj_face(r, b, e, line);
     }

@@ -109,28 +109,6 @@ static fl_status off_counts(off_reader *r, const char *p, const char *e, long li
     return FL_OK;
 }
 
-static fl_status off_vertex(off_reader *r, const char *p, const char *e, long line)
-{
-    double v[3];
-    char q[64];
-    for (int k = 0; k < 3; k++) {
-        const char *tok;
-        size_t len;
-        if (!fl_token_next(&p, e, &tok, &len))
-            return fl_fail(r->err, FL_ERR_INPUT, r->name, line,
-                           "a vertex needs 3 coordinates, this line has %d", k);
-        if (fl_parse_double(tok, len, &v[k]))
-            return fl_fail(r->err, FL_ERR_INPUT, r->name, line, "expected a coordinate, got %s",
-                           fl_token_quote(tok, len, q, sizeof q));
-        if (!isfinite(v[k]))
-            return fl_fail(r->err, FL_ERR_INPUT, r->name, line,
-                           "coordinate %s is not a finite number",
-                           fl_token_quote(tok, len, q, sizeof q));
-    }
-    fl_status st = fl_mesh_build_vertex(&r->mb, v[0], v[1], v[2]);
-    return st ? fl_fail(r->err, st, r->name, line, "%s", fl_mesh_build_why(st)) : FL_OK;
-}
-
 static fl_status off_index(off_reader *r, const char **p, const char *e, long line, long long k,
                            long long n, uint32_t *index)
 {
@@ -198,7 +176,7 @@ static fl_status off_read(off_reader *r)
                            "unexpected end of file: the header declares %lld vertices, "
                            "found %lld",
                            r->vertex_count, i);
-        st = off_vertex(r, b, e, line);
+        st = fl_mesh_build_text_vertex(&r->mb, b, e, "a vertex", r->name, line, r->err);
     }
     for (long long i = 0; i < r->face_count && !st; i++) {
         if (!off_content_line(r, &b, &e, &line))

@@ -26,15 +26,17 @@ static void swap_entries(build_ctx *c, size_t i, size_t j)
     }
 }
 
-/* Rearranges entries [lo, hi) so that entry k has the k-th smallest centre on `axis`
- * (quickselect with a median-of-three pivot; expected linear). */
+/* Rearranges entries [lo, hi) so that entry k has the k-th smallest centre on `axis`.
+ * Quickselect with a pseudo-random pivot: median-of-three pivots go quadratic on ordered
+ * inputs met in practice (a comb polygon's edges do it), a hashed pivot position does not and
+ * keeps the build deterministic. Expected linear. */
 static void select_kth(build_ctx *c, size_t lo, size_t hi, size_t k, int axis)
 {
     const double *x = c->cent + axis;
+    uint64_t state = (uint64_t)lo * 0x9E3779B97F4A7C15ULL ^ (uint64_t)hi;
     while (hi - lo > 2) {
-        size_t mid = lo + (hi - lo) / 2;
-        double a = x[3 * lo], b = x[3 * mid], d = x[3 * (hi - 1)];
-        double pivot = a < b ? (b < d ? b : (a < d ? d : a)) : (a < d ? a : (b < d ? d : b));
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        double pivot = x[3 * (lo + (size_t)((state >> 33) % (hi - lo)))];
         size_t i = lo, j = hi - 1;
         for (;;) { /* Hoare partition: equal keys split evenly, so duplicates stay linear */
             while (x[3 * i] < pivot)

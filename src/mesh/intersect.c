@@ -195,12 +195,16 @@ int fl_triangles_meet_beyond_vertex(const double *v, const double *a, const doub
 
 int fl_triangles_fold_over(const double *u, const double *v, const double *a, const double *b)
 {
-    if (fl_orient3d(u, v, a, b) != 0) return 0;
+    /* Side test first, in a projection where uva is proper: when the triangles are coplanar
+     * it is their side in the plane; when they are not, the answer is "no" whatever it says.
+     * Adjacent mesh triangles lie on opposite sides, so the (often near-zero, hence slow)
+     * coplanarity test is rarely needed. */
     int axis = proper_projection(u, v, a);
     double U[2], V[2], A[2], B[2];
     project(u, axis, U);
     project(v, axis, V);
     project(a, axis, A);
     project(b, axis, B);
-    return fl_orient2d(U, V, A) * fl_orient2d(U, V, B) > 0;
+    if (fl_orient2d(U, V, A) * fl_orient2d(U, V, B) <= 0) return 0;
+    return fl_orient3d(u, v, a, b) == 0;
 }

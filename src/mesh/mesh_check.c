@@ -8,7 +8,7 @@
 #include "mesh/halfedge.h"
 #include "mesh/mesh_internal.h"
 
-static fl_status validate_mesh(const fl_mesh *mesh, fl_error *err)
+fl_status fl_mesh_validate(const fl_mesh *mesh, fl_error *err)
 {
     if (!mesh) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "no mesh given");
     if ((mesh->vertex_count && !mesh->xyz) || (mesh->triangle_count && !mesh->tri))
@@ -17,6 +17,11 @@ static fl_status validate_mesh(const fl_mesh *mesh, fl_error *err)
         if (!isfinite(mesh->xyz[i]))
             return fl_fail(err, FL_ERR_INPUT, NULL, -1, "vertex %zu has a non-finite coordinate",
                            i / 3);
+    for (size_t i = 0; i < 3 * mesh->triangle_count; i++)
+        if (mesh->tri[i] >= mesh->vertex_count)
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                           "triangle %zu uses vertex %u but the mesh has %zu vertices", i / 3,
+                           mesh->tri[i], mesh->vertex_count);
     return FL_OK;
 }
 
@@ -35,7 +40,7 @@ fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
     if (!report) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "no report given");
     memset(report, 0, sizeof *report);
     if (!opt) opt = &defaults;
-    fl_status st = validate_mesh(mesh, err);
+    fl_status st = fl_mesh_validate(mesh, err);
     if (st != FL_OK) return st;
     if (fl_progress(opt->progress, opt->progress_user, "topology", 0.0))
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
@@ -52,8 +57,10 @@ fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
         st = fl_mesh_count_duplicate_vertices(mesh, &report->duplicate_vertices, err);
     }
     if (st == FL_OK && !opt->skip_self_intersections) {
-        st = fl_mesh_count_self_intersections(mesh, opt->progress, opt->progress_user,
-                                              &report->self_intersections, err);
+        fl_mesh_pairs pairs;
+        st = fl_mesh_find_self_intersections(mesh, 0, opt->progress, opt->progress_user, &pairs,
+                                             err);
+        report->self_intersections = pairs.total;
         report->self_intersections_checked = st == FL_OK;
     }
     if (st != FL_OK) fl_mesh_report_free(report);

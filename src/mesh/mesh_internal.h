@@ -28,9 +28,16 @@ int fl_mesh_triangle_degenerate(const fl_mesh *mesh, size_t t);
  * candidate pair of the self-intersection count; exposed for brute-force tests). */
 int fl_mesh_triangles_intersect(const fl_mesh *mesh, uint32_t a, uint32_t b);
 
-/* Counts pairs of triangles that intersect beyond their shared vertices (the definition of
- * fl_mesh_report.self_intersections). Degenerate triangles are skipped. */
-fl_status fl_mesh_count_self_intersections(const fl_mesh *mesh, fl_progress_fn progress, void *user,
-                                           size_t *count, fl_error *err);
+/* Rejects a NULL mesh or arrays (FL_ERR_USAGE), indices >= vertex_count and non-finite
+ * coordinates (FL_ERR_INPUT). */
+fl_status fl_mesh_validate(const fl_mesh *mesh, fl_error *err);
+
+/* The self-intersection search on a validated mesh: out->total counts the pairs of triangles
+ * that intersect beyond their shared vertices (the definition of
+ * fl_mesh_report.self_intersections), the first max_pairs are kept. Degenerate triangles are
+ * skipped. On failure out holds nothing to free. */
+fl_status fl_mesh_find_self_intersections(const fl_mesh *mesh, size_t max_pairs,
+                                          fl_progress_fn progress, void *user, fl_mesh_pairs *out,
+                                          fl_error *err);
 
 #endif /* FL_MESH_INTERNAL_H */

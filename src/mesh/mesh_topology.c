@@ -7,26 +7,6 @@
 #include "mesh/halfedge.h"
 #include "mesh/mesh_internal.h"
 
-/* Union-find with path halving; roots are the smallest index of their set. */
-static uint32_t uf_find(uint32_t *parent, uint32_t x)
-{
-    while (parent[x] != x) {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
-static void uf_union(uint32_t *parent, uint32_t a, uint32_t b)
-{
-    a = uf_find(parent, a);
-    b = uf_find(parent, b);
-    if (a < b)
-        parent[b] = a;
-    else if (b < a)
-        parent[a] = b;
-}
-
 /* Edge valences and directions. Marks the edge's lo vertex in `bad_vertex` when the edge is a
  * boundary, non-manifold or misoriented edge, so its component can be flagged later. */
 static void classify_edges(const fl_halfedges *he, fl_mesh_report *rep, unsigned char *bad_vertex)
@@ -57,17 +37,17 @@ static void count_vertex_fans(const fl_halfedges *he, uint32_t *parent, fl_mesh_
         uint32_t t = he->twin[h];
         if (t == FL_HE_NONE || t < h) continue;
         if (he->tri[t] == he->tri[h]) { /* same direction: corners pair up directly */
-            uf_union(parent, h, t);
-            uf_union(parent, fl_he_next(h), fl_he_next(t));
+            fl_uf_union(parent, h, t);
+            fl_uf_union(parent, fl_he_next(h), fl_he_next(t));
         } else {
-            uf_union(parent, h, fl_he_next(t));
-            uf_union(parent, fl_he_next(h), t);
+            fl_uf_union(parent, h, fl_he_next(t));
+            fl_uf_union(parent, fl_he_next(h), t);
         }
     }
     for (size_t v = 0; v < he->vertex_count; v++) {
         uint32_t fans = 0;
         for (uint32_t i = he->vertex_start[v]; i < he->vertex_start[v + 1]; i++)
-            fans += uf_find(parent, he->vertex_corners[i]) == he->vertex_corners[i];
+            fans += fl_uf_find(parent, he->vertex_corners[i]) == he->vertex_corners[i];
         if (fans == 0) rep->unreferenced_vertices++;
         if (fans > 1) rep->nonmanifold_vertices++, bad_vertex[v] = 1;
     }
@@ -81,17 +61,17 @@ static size_t label_components(const fl_halfedges *he, uint32_t *parent, uint32_
     for (size_t v = 0; v < nv; v++)
         parent[v] = (uint32_t)v, comp[v] = FL_HE_NONE;
     for (size_t t = 0; t < he->triangle_count; t++) {
-        uf_union(parent, he->tri[3 * t], he->tri[3 * t + 1]);
-        uf_union(parent, he->tri[3 * t], he->tri[3 * t + 2]);
+        fl_uf_union(parent, he->tri[3 * t], he->tri[3 * t + 1]);
+        fl_uf_union(parent, he->tri[3 * t], he->tri[3 * t + 2]);
     }
     /* number roots in triangle order so component 0 holds triangle 0 */
     for (size_t t = 0; t < he->triangle_count; t++) {
-        uint32_t r = uf_find(parent, he->tri[3 * t]);
+        uint32_t r = fl_uf_find(parent, he->tri[3 * t]);
         if (comp[r] == FL_HE_NONE) comp[r] = (uint32_t)count++;
     }
     for (size_t v = 0; v < nv; v++)
         if (he->vertex_start[v] < he->vertex_start[v + 1])
-            comp[v] = comp[uf_find(parent, (uint32_t)v)];
+            comp[v] = comp[fl_uf_find(parent, (uint32_t)v)];
     return count;
 }
 

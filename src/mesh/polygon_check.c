@@ -41,6 +41,7 @@ typedef struct edge_ctx {
     const fl_polygon *pg;
     uint32_t *ring_of; /* ring of each vertex */
     size_t bad_pairs;
+    uint32_t first[2]; /* the first bad pair found */
 } edge_ctx;
 
 static uint32_t edge_end(const edge_ctx *c, uint32_t e)
@@ -74,17 +75,18 @@ static int check_edge_pair(void *user, uint32_t e, uint32_t f)
     else
         bad = fl_segments_intersect2(xy + 2 * (size_t)e, xy + 2 * (size_t)e1, xy + 2 * (size_t)f,
                                      xy + 2 * (size_t)f1);
-    c->bad_pairs += (size_t)bad;
+    if (bad && c->bad_pairs++ == 0) c->first[0] = e < f ? e : f, c->first[1] = e < f ? f : e;
     return 0;
 }
 
-/* Counts improperly meeting edge pairs over the rings with >= 3 vertices. */
-static fl_status count_edge_intersections(const fl_polygon *pg, size_t *count, fl_error *err)
+/* Counts improperly meeting edge pairs over the rings with >= 3 vertices and keeps one. */
+static fl_status count_edge_intersections(const fl_polygon *pg, fl_polygon_report *rep,
+                                          fl_error *err)
 {
     size_t nv = pg->vertex_count, n = 0;
     double *boxes = fl_alloc_array(nv, 6 * sizeof(double));
     uint32_t *ids = fl_alloc_array(nv, sizeof(uint32_t));
-    edge_ctx c = {pg, fl_alloc_array(nv, sizeof(uint32_t)), 0};
+    edge_ctx c = {pg, fl_alloc_array(nv, sizeof(uint32_t)), 0, {0, 0}};
     fl_status st = FL_OK;
     if (!boxes || !ids || !c.ring_of) {
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory checking polygon edges");
@@ -108,7 +110,8 @@ static fl_status count_edge_intersections(const fl_polygon *pg, size_t *count, f
     if (st == FL_OK) {
         fl_bvh_self_pairs(&bvh, check_edge_pair, &c, NULL, NULL, NULL);
         fl_bvh_free(&bvh);
-        *count = c.bad_pairs;
+        rep->edge_intersections = c.bad_pairs;
+        rep->first_crossing[0] = c.first[0], rep->first_crossing[1] = c.first[1];
     }
 done:
     free(boxes);
@@ -208,7 +211,7 @@ fl_status fl_polygon_check(const fl_polygon *polygon, fl_polygon_report *report,
         fl_polygon_report_free(report);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory checking polygon");
     }
-    st = count_edge_intersections(pg, &report->edge_intersections, err);
+    st = count_edge_intersections(pg, report, err);
     if (st != FL_OK) {
         fl_polygon_report_free(report);
         return st;

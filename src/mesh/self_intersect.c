@@ -2,6 +2,7 @@
  * triangles, each decided exactly. Pairs that share vertices are judged by what they have in
  * common beyond the shared vertices (see fl_mesh_report.self_intersections). */
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/core.h"
 #include "mesh/bvh.h"
@@ -45,13 +46,20 @@ int fl_mesh_triangles_intersect(const fl_mesh *mesh, uint32_t ta, uint32_t tb)
 
 typedef struct count_ctx {
     const fl_mesh *mesh;
-    size_t count;
+    size_t count, max_pairs;
+    fl_vec pairs; /* elements of 2 uint32_t, grown as pairs are found */
+    int out_of_memory;
 } count_ctx;
 
 static int count_pair(void *user, uint32_t a, uint32_t b)
 {
     count_ctx *c = user;
-    c->count += (size_t)fl_mesh_triangles_intersect(c->mesh, a, b);
+    if (!fl_mesh_triangles_intersect(c->mesh, a, b)) return 0;
+    if (c->count < c->max_pairs) {
+        uint32_t pair[2] = {a < b ? a : b, a < b ? b : a};
+        if (fl_vec_push(&c->pairs, pair, 1)) return c->out_of_memory = 1;
+    }
+    c->count++;
     return 0;
 }
 
@@ -74,16 +82,18 @@ static size_t proper_triangle_boxes(const fl_mesh *mesh, double *boxes, uint32_t
     return n;
 }
 
-fl_status fl_mesh_count_self_intersections(const fl_mesh *mesh, fl_progress_fn progress, void *user,
-                                           size_t *count, fl_error *err)
+fl_status fl_mesh_find_self_intersections(const fl_mesh *mesh, size_t max_pairs,
+                                          fl_progress_fn progress, void *user, fl_mesh_pairs *out,
+                                          fl_error *err)
 {
-    *count = 0;
-    double *boxes = fl_alloc_array(mesh->triangle_count, 6 * sizeof(double));
-    uint32_t *ids = fl_alloc_array(mesh->triangle_count, sizeof(uint32_t));
+    memset(out, 0, sizeof *out);
+    size_t nt = mesh->triangle_count;
+    double *boxes = fl_alloc_array(nt, 6 * sizeof(double));
+    uint32_t *ids = fl_alloc_array(nt, sizeof(uint32_t));
     if (!boxes || !ids) {
         free(boxes);
         free(ids);
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for self-intersection boxes");
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for self-intersection search");
     }
     size_t n = proper_triangle_boxes(mesh, boxes, ids);
     fl_bvh bvh;
@@ -91,10 +101,37 @@ fl_status fl_mesh_count_self_intersections(const fl_mesh *mesh, fl_progress_fn p
     free(boxes);
     free(ids);
     if (st != FL_OK) return st;
-    count_ctx c = {mesh, 0};
+    count_ctx c = {mesh, 0, max_pairs, {NULL, 0, 0, 0}, 0};
+    fl_vec_init(&c.pairs, 2 * sizeof(uint32_t));
     if (fl_bvh_self_pairs(&bvh, count_pair, &c, progress, user, "self-intersections"))
-        st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+        st = c.out_of_memory
+                 ? fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory keeping intersecting pairs")
+                 : fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
     fl_bvh_free(&bvh);
-    *count = c.count;
-    return st;
+    if (st != FL_OK) {
+        fl_vec_free(&c.pairs);
+        return st;
+    }
+    out->total = c.count;
+    out->count = c.pairs.count;
+    out->pairs = c.pairs.count ? fl_vec_release(&c.pairs) : NULL;
+    fl_vec_free(&c.pairs);
+    return FL_OK;
+}
+
+fl_status fl_mesh_self_intersections(const fl_mesh *mesh, size_t max_pairs, fl_progress_fn progress,
+                                     void *progress_user, fl_mesh_pairs *out, fl_error *err)
+{
+    if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "no output given");
+    memset(out, 0, sizeof *out);
+    fl_status st = fl_mesh_validate(mesh, err);
+    if (st != FL_OK) return st;
+    return fl_mesh_find_self_intersections(mesh, max_pairs, progress, progress_user, out, err);
+}
+
+void fl_mesh_pairs_free(fl_mesh_pairs *pairs)
+{
+    if (!pairs) return;
+    free(pairs->pairs);
+    memset(pairs, 0, sizeof *pairs);
 }

@@ -59,24 +59,11 @@ fl_status fl_mesh_count_duplicate_vertices(const fl_mesh *mesh, size_t *count, f
     return st;
 }
 
-static fl_status validate(const fl_mesh *mesh, fl_error *err)
-{
-    if (!mesh) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "no mesh given");
-    if ((mesh->vertex_count && !mesh->xyz) || (mesh->triangle_count && !mesh->tri))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "mesh counts are set but arrays are NULL");
-    for (size_t i = 0; i < 3 * mesh->triangle_count; i++)
-        if (mesh->tri[i] >= mesh->vertex_count)
-            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
-                           "triangle %zu uses vertex %u but the mesh has %zu vertices", i / 3,
-                           mesh->tri[i], mesh->vertex_count);
-    return FL_OK;
-}
-
 fl_status fl_mesh_weld(const fl_mesh *mesh, fl_mesh *out, fl_error *err)
 {
     if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "no output mesh given");
     memset(out, 0, sizeof *out);
-    fl_status st = validate(mesh, err);
+    fl_status st = fl_mesh_validate(mesh, err);
     if (st != FL_OK) return st;
     size_t nv = mesh->vertex_count, nt = mesh->triangle_count, kept = 0;
     size_t *first = fl_alloc_array(nv, sizeof *first);

@@ -109,8 +109,8 @@ int fl_orient3d(const double *a, const double *b, const double *c, const double 
 #define IC_LO 0x1p-240
 #define IC_HI 0x1p+240
 
-static int incircle_filter(const double *a, const double *b, const double *c, const double *d,
-                           double adw, double bdw, double cdw, int weighted)
+static int incircle_any(const double *a, const double *b, const double *c, const double *d,
+                        double adw, double bdw, double cdw, int weighted)
 {
     double adx = a[0] - d[0], bdx = b[0] - d[0], cdx = c[0] - d[0];
     double ady = a[1] - d[1], bdy = b[1] - d[1], cdy = c[1] - d[1];
@@ -137,12 +137,12 @@ static int incircle_filter(const double *a, const double *b, const double *c, co
 
 int fl_incircle(const double *a, const double *b, const double *c, const double *d)
 {
-    return incircle_filter(a, b, c, d, 0, 0, 0, 0);
+    return incircle_any(a, b, c, d, 0, 0, 0, 0);
 }
 
 int fl_incircle_weighted(const double *a, const double *b, const double *c, const double *d)
 {
-    return incircle_filter(a, b, c, d, a[2] - d[2], b[2] - d[2], c[2] - d[2], 1);
+    return incircle_any(a, b, c, d, a[2] - d[2], b[2] - d[2], c[2] - d[2], 1);
 }
 
 /* Degree 5 with the lift l = dx^2 + dy^2 + dz^2 - dw. Lambda = mm^2 + mw as in 2D,
@@ -156,8 +156,8 @@ int fl_incircle_weighted(const double *a, const double *b, const double *c, cons
 #define IS_LO 0x1p-190
 #define IS_HI 0x1p+190
 
-static int insphere_filter(const double *a, const double *b, const double *c, const double *d,
-                           const double *e, const double *dw, int weighted)
+static int insphere_any(const double *a, const double *b, const double *c, const double *d,
+                        const double *e, const double *dw, int weighted)
 {
     double aex = a[0] - e[0], bex = b[0] - e[0], cex = c[0] - e[0], dex = d[0] - e[0];
     double aey = a[1] - e[1], bey = b[1] - e[1], cey = c[1] - e[1], dey = d[1] - e[1];
@@ -195,12 +195,12 @@ static int insphere_filter(const double *a, const double *b, const double *c, co
 int fl_insphere(const double *a, const double *b, const double *c, const double *d, const double *e)
 {
     static const double zero[4] = {0, 0, 0, 0};
-    return insphere_filter(a, b, c, d, e, zero, 0);
+    return insphere_any(a, b, c, d, e, zero, 0);
 }
 
 int fl_insphere_weighted(const double *a, const double *b, const double *c, const double *d,
                          const double *e)
 {
     double dw[4] = {a[3] - e[3], b[3] - e[3], c[3] - e[3], d[3] - e[3]};
-    return insphere_filter(a, b, c, d, e, dw, 1);
+    return insphere_any(a, b, c, d, e, dw, 1);
 }

@@ -4,7 +4,7 @@
  * order: det[p 1] is orient2d/orient3d and det[p l 1] is incircle/insphere (subtracting the
  * last row from the others gives the difference forms evaluated in predicates.c).
  *
- * Orientation: Edelsbrunner & Mucke, "Simulation of Simplicity" (ACM TOG 9(1), 1990), §4-5.
+ * Orientation: Edelsbrunner & Mucke, "Simulation of Simplicity" (ACM TOG 9(1):66-104, 1990).
  * Coordinate j of the point with index i becomes p_ij + eps^(2^kappa(i,j)) with
  * kappa = i*d + (d-1-j). det is multilinear in the rows, so the perturbed determinant is a sum
  * over partial matchings S = {(row, column)} (distinct rows, distinct columns) of
@@ -15,8 +15,9 @@
  * coefficient decides. Only the relative order of the kappas matters, so ranks of the indices
  * among the call's points stand for the indices themselves.
  *
- * In-circle / in-sphere: Devillers & Teillaud, "Perturbations and vertex removal in a 3D
- * Delaunay triangulation" (SODA 2003), §3. Only the lift column is perturbed:
+ * In-circle / in-sphere: in the manner of Devillers & Teillaud, "Perturbations for Delaunay and
+ * weighted Delaunay 3D triangulations" (CGTA 44:160-168, 2011), which orders the points
+ * lexicographically; here the caller's index orders them. Only the lift column is perturbed:
  * l_k -> l_k - eps_k (weight + eps_k), with eps_k larger for a higher index. det is linear in
  * that column, so det(eps) = det - sum_k eps_k C_k with the cofactor
  * C_k = (-1)^(k + d) det[p 1] over the other points, i.e. (-1)^(k+d) times their orientation. */

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 typedef struct cli_result {
     int code;
@@ -28,15 +29,17 @@ static inline void cli_read_file(const char *path, char *buf, size_t size)
 /* args is appended to the command line as is (quote it yourself). */
 static inline int cli_run(cli_result *r, const char *args)
 {
-    char cmd[4096];
-    snprintf(cmd, sizeof cmd, "'%s' %s >cli_test_stdout.txt 2>cli_test_stderr.txt </dev/null",
-             FL_CLI_PATH, args);
+    /* Test executables run in parallel in one directory: name the captures by process. */
+    char cmd[4096], out[64], err[64];
+    snprintf(out, sizeof out, "cli_test_stdout.%ld.txt", (long)getpid());
+    snprintf(err, sizeof err, "cli_test_stderr.%ld.txt", (long)getpid());
+    snprintf(cmd, sizeof cmd, "'%s' %s >%s 2>%s </dev/null", FL_CLI_PATH, args, out, err);
     int st = system(cmd);
     r->code = (st != -1 && WIFEXITED(st)) ? WEXITSTATUS(st) : -1;
-    cli_read_file("cli_test_stdout.txt", r->out, sizeof r->out);
-    cli_read_file("cli_test_stderr.txt", r->err, sizeof r->err);
-    remove("cli_test_stdout.txt");
-    remove("cli_test_stderr.txt");
+    cli_read_file(out, r->out, sizeof r->out);
+    cli_read_file(err, r->err, sizeof r->err);
+    remove(out);
+    remove(err);
     return r->code;
 }
 

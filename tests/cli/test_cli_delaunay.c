@@ -16,6 +16,12 @@ static void test_delaunay_square_with_centre_and_duplicate(void)
     CHECK(strstr(r.out, "\"simplices\":4") != NULL);
     CHECK(strstr(r.out, "\"hull_faces\":4") != NULL);
     CHECK(strstr(r.out, "\"valid\":true") != NULL);
+    /* The picture holds every point and the 8 edges (4 hull sides, 4 spokes). */
+    CHECK_EQ_INT(cli_run(&r, "delaunay dt_sq.xy -o dt_sq.svg"), 0);
+    char svg[8192];
+    cli_read_file("dt_sq.svg", svg, sizeof svg);
+    CHECK(strstr(svg, "</svg>") != NULL);
+    remove("dt_sq.svg");
     remove("dt_sq.xy");
 }
 

@@ -14,6 +14,8 @@ static void test_demo_writes_summary_with_every_step_valid(void)
     CHECK(strstr(summary, "\"genus\":1") != NULL); /* the bundled torus */
     CHECK(strstr(summary, "\"delaunay_2d\":{") != NULL);
     CHECK(strstr(summary, "\"delaunay_3d\":{") != NULL);
+    CHECK(strstr(summary, "\"reconstruct_2d\":{") != NULL);
+    CHECK(strstr(summary, "\"all_on_boundary\":true") != NULL);
     CHECK(strstr(summary, "\"valid\":false") == NULL);
     FILE *f = fopen("demo_test_out/peanut-delaunay.vtk", "r");
     CHECK(f != NULL);

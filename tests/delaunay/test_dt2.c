@@ -111,6 +111,41 @@ static void test_dt2_empty_circle_on_cocircular_points(void)
     free(xy);
 }
 
+/* 2048 lattice points on one circle, x^2 + y^2 = N with N = 5*13*17*29*37*41*53*61*73 (a product
+ * of nine primes = 1 mod 4 has 4 * 2^9 representations; N < 2^53, so all is exact). Every
+ * in-circle test among them ties: the perturbation alone shapes the triangulation. */
+static void test_dt2_thousands_of_exactly_cocircular_points(void)
+{
+    long long n2 = 5LL * 13 * 17 * 29 * 37 * 41 * 53 * 61 * 73, r = (long long)sqrt((double)n2);
+    double *xy = malloc(2 * 2048 * sizeof *xy);
+    size_t m = 0;
+    for (long long x = -r; x <= r && m + 2 <= 2048; x++) {
+        long long y2 = n2 - x * x, y = (long long)llround(sqrt((double)y2));
+        while (y * y > y2)
+            y--;
+        while ((y + 1) * (y + 1) <= y2)
+            y++;
+        if (y * y != y2) continue;
+        xy[2 * m] = (double)x;
+        xy[2 * m + 1] = (double)y;
+        m++;
+        if (y != 0) {
+            xy[2 * m] = (double)x;
+            xy[2 * m + 1] = (double)-y;
+            m++;
+        }
+    }
+    CHECK_EQ_INT(m, 2048);
+    fl_dt2 dt;
+    fl_error err;
+    CHECK_STATUS(fl_dt2_build(xy, m, NULL, &dt, &err), FL_OK, &err);
+    CHECK_STATUS(fl_dt2_verify(xy, &dt, &err), FL_OK, &err);
+    CHECK_EQ_INT(dt.hull_count, m);
+    CHECK_EQ_INT(dt.triangle_count, m - 2);
+    fl_dt2_free(&dt);
+    free(xy);
+}
+
 static void test_dt2_three_four_and_five_points(void)
 {
     double cw[] = {0, 0, 0, 1, 1, 0};
@@ -434,4 +469,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_dt2_random_uniform_points_are_delaunay),
              FL_TEST_CASE(test_dt2_grid_at_extreme_scales),
              FL_TEST_CASE(test_dt2_many_collinear_points_and_a_few_others),
              FL_TEST_CASE(test_dt2_nearly_cocircular_points),
-             FL_TEST_CASE(test_dt2_small_degenerate_lattice_sets))
+             FL_TEST_CASE(test_dt2_small_degenerate_lattice_sets),
+             FL_TEST_CASE(test_dt2_thousands_of_exactly_cocircular_points))

@@ -158,6 +158,35 @@ static void test_dt3_cospherical_integer_points(void)
     free(p);
 }
 
+/* Triangles ijk with every other point strictly on one side (O(n^4)); each must be one of dt's
+ * hull faces. Returns how many there are. */
+static size_t brute_force_hull_faces(const double *p, size_t n, const fl_dt3 *dt)
+{
+    size_t count = 0;
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t j = i + 1; j < n; j++)
+            for (uint32_t k = j + 1; k < n; k++) {
+                int pos = 0, neg = 0;
+                for (size_t l = 0; l < n; l++) {
+                    int s = fl_orient3d(p + 3 * i, p + 3 * j, p + 3 * k, p + 3 * l);
+                    pos += s > 0;
+                    neg += s < 0;
+                }
+                if ((size_t)(pos + neg) != n - 3 || (pos && neg)) continue;
+                count++;
+                int found = 0;
+                for (size_t h = 0; h < dt->hull_face_count; h++) {
+                    const uint32_t *f = dt->hull_faces + 3 * h;
+                    int m = (f[0] == i || f[1] == i || f[2] == i) +
+                            (f[0] == j || f[1] == j || f[2] == j) +
+                            (f[0] == k || f[1] == k || f[2] == k);
+                    found |= m == 3;
+                }
+                CHECK_MSG(found, "brute-force hull triangle %u %u %u is missing", i, j, k);
+            }
+    return count;
+}
+
 /* The vertices of the hull faces are exactly the points on the hull boundary (brute force), and
  * every hull face supports the point set. Random and grid (coplanar facets) sets. */
 static void test_dt3_hull_matches_brute_force(void)
@@ -177,6 +206,8 @@ static void test_dt3_hull_matches_brute_force(void)
         }
         for (size_t i = 0; i < n; i++)
             CHECK_EQ_INT(on[i], dt3c_on_hull(p, 3, n, i));
+        if (trial < 2) /* general position: the hull triangles themselves are unique */
+            CHECK_EQ_INT(dt.hull_face_count, brute_force_hull_faces(p, n, &dt));
         free(on);
         fl_dt3_free(&dt);
         free(p);
@@ -423,6 +454,44 @@ static void test_dt3_verify_rejects_broken_triangulations(void)
     fl_dt3_free(&dt);
 }
 
+/* Are all n points in one plane (exact, brute force over triples)? */
+static int all_coplanar(const double *p, size_t n)
+{
+    for (size_t a = 0; a < n; a++)
+        for (size_t b = 0; b < n; b++)
+            for (size_t c = 0; c < n; c++)
+                for (size_t d = 0; d < n; d++)
+                    if (fl_orient3d(p + 3 * a, p + 3 * b, p + 3 * c, p + 3 * d) != 0) return 0;
+    return 1;
+}
+
+/* Many small random subsets (with repeats) of the 3x3x3 grid: as degenerate as input gets. Each
+ * either triangulates correctly (verify, brute-force empty spheres, volume) or fails with the
+ * right error for the right reason. */
+static void test_dt3_random_subsets_of_a_small_grid(void)
+{
+    unsigned long long seed = 2024;
+    double p[3 * 30];
+    for (int trial = 0; trial < 300; trial++) {
+        size_t n = 4 + (size_t)(fl_test_rand_u64(&seed) % 27);
+        for (size_t i = 0; i < 3 * n; i++)
+            p[i] = (double)(fl_test_rand_u64(&seed) % 3);
+        fl_dt3 dt;
+        fl_error err;
+        fl_status st = fl_dt3_build(p, n, NULL, &dt, &err);
+        if (st == FL_OK) {
+            check_valid(p, n, &dt);
+            CHECK_EQ_INT(dt3c_empty_sphere_violations(p, 3, n, dt.tet, dt.tet_count, 0), 0);
+        } else if (st == FL_ERR_ALGORITHM) {
+            CHECK_MSG(all_coplanar(p, n), "trial %d: %s", trial, err.message);
+        } else {
+            CHECK_EQ_INT(st, FL_ERR_INPUT);
+            CHECK(strstr(err.message, "at least 4 distinct") != NULL);
+        }
+        fl_dt3_free(&dt);
+    }
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_dt3_valid_and_empty_spheres_on_random_shapes),
              FL_TEST_CASE(test_dt3_valid_on_ten_thousand_points),
              FL_TEST_CASE(test_dt3_empty_sphere_on_integer_grid),
@@ -435,4 +504,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_dt3_valid_and_empty_spheres_on_random_shapes),
              FL_TEST_CASE(test_dt3_coplanar_points_plus_one),
              FL_TEST_CASE(test_dt3_circumcenters_are_equidistant),
              FL_TEST_CASE(test_dt3_progress_reports_and_cancels),
-             FL_TEST_CASE(test_dt3_verify_rejects_broken_triangulations))
+             FL_TEST_CASE(test_dt3_verify_rejects_broken_triangulations),
+             FL_TEST_CASE(test_dt3_random_subsets_of_a_small_grid))

@@ -46,8 +46,10 @@ static size_t containing_tet(const double *p, const fl_rt3 *rt, uint32_t h)
 }
 
 /* No ball, hidden or not, is below the lifted hyperplane of any tetrahedron; every hidden ball is
- * strictly above the lifted tetrahedron over its centre; vertices + hidden + duplicates = n. */
-static void check_against_brute_force(const double *p, size_t n, const fl_rt3 *rt)
+ * above the lifted tetrahedron over its centre (strictly unless ties are possible: a lifted point
+ * exactly on the lower hull may be left out, as the perturbation decides); vertices + hidden +
+ * duplicates = n. */
+static void check_against_brute_force(const double *p, size_t n, const fl_rt3 *rt, int strict)
 {
     CHECK_EQ_INT(dt3c_empty_sphere_violations(p, 4, n, rt->tet, rt->tet_count, 1), 0);
     for (size_t i = 0; i < rt->hidden_count; i++) {
@@ -57,7 +59,7 @@ static void check_against_brute_force(const double *p, size_t n, const fl_rt3 *r
         if (t == SIZE_MAX) continue;
         const uint32_t *q = rt->tet + 4 * t;
         CHECK(fl_insphere_weighted(p + 4 * q[0], p + 4 * q[1], p + 4 * q[2], p + 4 * q[3],
-                                   p + 4 * (size_t)h) < 0);
+                                   p + 4 * (size_t)h) < (strict ? 0 : 1));
     }
     size_t dups = 0;
     for (size_t i = 0; i < n; i++)
@@ -73,7 +75,7 @@ static void test_rt3_power_criterion_and_hidden_balls_by_brute_force(void)
         double *p = random_balls(n, 21 + (unsigned long long)trial, wmax[trial]);
         fl_rt3 rt;
         build_ok(p, n, &rt);
-        check_against_brute_force(p, n, &rt);
+        check_against_brute_force(p, n, &rt, 1);
         if (trial == 2) /* heavy balls among light ones: many are hidden */
             CHECK(rt.hidden_count > 20);
         fl_rt3_free(&rt);
@@ -105,7 +107,7 @@ static void test_rt3_later_balls_hide_earlier_vertices(void)
     }
     fl_rt3 rt;
     build_ok(p, n, &rt);
-    check_against_brute_force(p, n, &rt);
+    check_against_brute_force(p, n, &rt, 1);
     size_t grid_hidden = 0;
     for (size_t i = 0; i < rt.hidden_count; i++)
         grid_hidden += rt.hidden[i] < 512;
@@ -147,7 +149,7 @@ static void test_rt3_equal_weights_give_the_delaunay_triangulation(void)
                 p[4 * i + 1] = (double)(i / 5 % 5);
                 p[4 * i + 2] = (double)(i / 25);
             }
-            p[4 * i + 3] = 2.5;
+            p[4 * i + 3] = trial == 0 ? 0.0 : 2.5; /* zero weights, then another constant */
             memcpy(xyz + 3 * i, p + 4 * i, 3 * sizeof *xyz);
         }
         fl_rt3 rt;
@@ -184,7 +186,7 @@ static void test_rt3_coincident_centres(void)
     p[4 * 60 + 3] = p[4 * 11 + 3] + 0.001;
     fl_rt3 rt;
     build_ok(p, n, &rt);
-    check_against_brute_force(p, n, &rt);
+    check_against_brute_force(p, n, &rt, 1);
     CHECK(rt.duplicate_of[50] == 10 || rt.duplicate_of[10] == 50);
     int hidden11 = 0;
     for (size_t i = 0; i < rt.hidden_count; i++)
@@ -232,8 +234,55 @@ static void test_rt3_bad_input(void)
     CHECK(rt.tet == NULL);
 }
 
+/* Balls on a 5x5x5 grid with weights 0 or 1: many lifted points are coplanar, so ties in the
+ * power test are everywhere; the result must still satisfy the exact power criterion. */
+static void test_rt3_power_criterion_on_grid_with_integer_weights(void)
+{
+    size_t n = 125;
+    double *p = malloc(4 * n * sizeof *p);
+    unsigned long long seed = 99;
+    for (size_t i = 0; i < n; i++) {
+        p[4 * i] = (double)(i % 5);
+        p[4 * i + 1] = (double)(i / 5 % 5);
+        p[4 * i + 2] = (double)(i / 25);
+        p[4 * i + 3] = (double)(fl_test_rand_u64(&seed) & 1);
+    }
+    fl_rt3 rt;
+    build_ok(p, n, &rt);
+    check_against_brute_force(p, n, &rt, 0);
+    CHECK(rt.hidden_count > 0);
+    fl_rt3_free(&rt);
+    free(p);
+}
+
+/* Many small random subsets of the 3x3x3 grid with weights 0, 1 or 2 (repeated centres included):
+ * either a correct regular triangulation or a clean error. */
+static void test_rt3_random_subsets_of_a_small_grid(void)
+{
+    unsigned long long seed = 77;
+    double p[4 * 30];
+    for (int trial = 0; trial < 300; trial++) {
+        size_t n = 4 + (size_t)(fl_test_rand_u64(&seed) % 27);
+        for (size_t i = 0; i < 4 * n; i++)
+            p[i] = (double)(fl_test_rand_u64(&seed) % 3);
+        fl_rt3 rt;
+        fl_error err;
+        fl_status st = fl_rt3_build(p, n, NULL, &rt, &err);
+        if (st == FL_OK) {
+            CHECK_STATUS(fl_rt3_verify(p, &rt, &err), FL_OK, &err);
+            check_against_brute_force(p, n, &rt, 0);
+        } else {
+            CHECK_MSG(st == FL_ERR_ALGORITHM || st == FL_ERR_INPUT, "trial %d: %s", trial,
+                      err.message);
+        }
+        fl_rt3_free(&rt);
+    }
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_rt3_power_criterion_and_hidden_balls_by_brute_force),
              FL_TEST_CASE(test_rt3_later_balls_hide_earlier_vertices),
              FL_TEST_CASE(test_rt3_equal_weights_give_the_delaunay_triangulation),
              FL_TEST_CASE(test_rt3_coincident_centres), FL_TEST_CASE(test_rt3_orthogonal_balls),
-             FL_TEST_CASE(test_rt3_bad_input))
+             FL_TEST_CASE(test_rt3_bad_input),
+             FL_TEST_CASE(test_rt3_power_criterion_on_grid_with_integer_weights),
+             FL_TEST_CASE(test_rt3_random_subsets_of_a_small_grid))

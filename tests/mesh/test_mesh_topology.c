@@ -352,6 +352,112 @@ static void test_progress_can_cancel(void)
     fl_mesh_free(&m);
 }
 
+/* Number of sides (directed when `directed`) of the mesh equal to {a,b} / (a,b). */
+static int side_uses(const fl_mesh *m, uint32_t a, uint32_t b, int directed)
+{
+    int n = 0;
+    for (size_t h = 0; h < 3 * m->triangle_count; h++) {
+        uint32_t c = m->tri[h], d = m->tri[h % 3 == 2 ? h - 2 : h + 1];
+        n += (c == a && d == b) || (!directed && c == b && d == a);
+    }
+    return n;
+}
+
+/* Brute-force fan count at v: triangles at v joined when they share a side through v that
+ * has exactly two triangles. */
+static int fans_at(const fl_mesh *m, uint32_t v)
+{
+    int label[64], nt = 0, fans = 0;
+    uint32_t at[64];
+    for (uint32_t t = 0; t < m->triangle_count && nt < 64; t++)
+        for (int k = 0; k < 3; k++)
+            if (m->tri[3 * t + k] == v) {
+                at[nt] = t, label[nt] = nt, nt++;
+                break;
+            }
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (int i = 0; i < nt; i++)
+            for (int j = 0; j < nt; j++)
+                for (int k = 0; k < 3; k++) {
+                    uint32_t w = m->tri[3 * at[i] + k];
+                    int in_j = 0;
+                    for (int l = 0; l < 3; l++)
+                        in_j |= m->tri[3 * at[j] + l] == w;
+                    if (i != j && w != v && in_j && side_uses(m, v, w, 0) == 2 &&
+                        label[j] > label[i])
+                        label[j] = label[i], changed = 1;
+                }
+    }
+    for (int i = 0; i < nt; i++)
+        fans += label[i] == i;
+    return fans;
+}
+
+/* Random small meshes with shared and unused vertices, repeated triangles and non-manifold
+ * edges: every topological count equals its definition evaluated by brute force. */
+static void test_random_meshes_match_brute_force_definitions(void)
+{
+    unsigned long long rng = 41;
+    for (int trial = 0; trial < 200; trial++) {
+        size_t nv = 3 + fl_test_rand_u64(&rng) % 8, nt = 1 + fl_test_rand_u64(&rng) % 12;
+        fl_mesh m = fx_mesh_alloc(nv, nt);
+        for (size_t i = 0; i < 3 * nv; i++)
+            m.xyz[i] = (double)(fl_test_rand_u64(&rng) % 3);
+        for (size_t t = 0; t < nt; t++) { /* distinct corners: fans are defined per triangle */
+            uint32_t *f = m.tri + 3 * t;
+            do {
+                for (int k = 0; k < 3; k++)
+                    f[k] = (uint32_t)(fl_test_rand_u64(&rng) % nv);
+            } while (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]);
+        }
+        fl_mesh_report r = check(&m);
+        size_t edges = 0, boundary = 0, nonmanifold = 0, misoriented = 0, unref = 0, nmv = 0;
+        for (uint32_t a = 0; a < nv; a++)
+            for (uint32_t b = a; b < nv; b++) {
+                int n = side_uses(&m, a, b, 0);
+                if (!n) continue;
+                edges++;
+                boundary += n == 1;
+                nonmanifold += n >= 3;
+                misoriented +=
+                    a == b ? n > 1 : side_uses(&m, a, b, 1) > 1 || side_uses(&m, b, a, 1) > 1;
+            }
+        for (uint32_t v = 0; v < nv; v++) {
+            int f = fans_at(&m, v);
+            unref += f == 0;
+            nmv += f > 1;
+        }
+        CHECK_EQ_INT(r.edges, edges);
+        CHECK_EQ_INT(r.boundary_edges, boundary);
+        CHECK_EQ_INT(r.nonmanifold_edges, nonmanifold);
+        CHECK_EQ_INT(r.misoriented_edges, misoriented);
+        CHECK_EQ_INT(r.unreferenced_vertices, unref);
+        CHECK_EQ_INT(r.nonmanifold_vertices, nmv);
+        CHECK_EQ_INT(r.euler, (long long)(nv - unref) - (long long)edges + (long long)nt);
+        int label[16], changed = 1;
+        size_t components = 0, faces = 0;
+        for (size_t t = 0; t < nt; t++)
+            label[t] = (int)t;
+        while (changed) { /* triangles sharing a vertex take the smaller label */
+            changed = 0;
+            for (size_t t = 0; t < nt; t++)
+                for (size_t u = 0; u < nt; u++)
+                    for (int k = 0; k < 9; k++)
+                        if (m.tri[3 * t + k / 3] == m.tri[3 * u + k % 3] && label[u] > label[t])
+                            label[u] = label[t], changed = 1;
+        }
+        for (size_t t = 0; t < nt; t++)
+            components += label[t] == (int)t;
+        CHECK_EQ_INT(r.components, components);
+        for (size_t c = 0; c < r.components; c++)
+            faces += r.component_faces[c];
+        CHECK_EQ_INT(faces, nt);
+        fl_mesh_report_free(&r);
+        fl_mesh_free(&m);
+    }
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_tetrahedron_is_closed_oriented_genus_0),
              FL_TEST_CASE(test_cube_euler_2_volume_1_area_6),
              FL_TEST_CASE(test_cube_far_from_origin_keeps_volume),
@@ -366,4 +472,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_tetrahedron_is_closed_oriented_genus_0),
              FL_TEST_CASE(test_weld_turns_soup_cube_into_closed_cube),
              FL_TEST_CASE(test_bad_input_is_rejected_and_report_zeroed),
              FL_TEST_CASE(test_empty_mesh_has_no_components),
-             FL_TEST_CASE(test_progress_can_cancel))
+             FL_TEST_CASE(test_progress_can_cancel),
+             FL_TEST_CASE(test_random_meshes_match_brute_force_definitions))

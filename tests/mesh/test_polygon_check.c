@@ -68,6 +68,7 @@ static void test_bow_tie_is_not_simple(void)
     fl_polygon_report r = check(&p);
     CHECK(!r.simple);
     CHECK_EQ_INT(r.edge_intersections, 1);
+    CHECK(r.first_crossing[0] == 0 && r.first_crossing[1] == 2);
     CHECK_EQ_INT(r.holes_inside, -1);
     fl_polygon_report_free(&r);
     fl_polygon_free(&p);

@@ -224,6 +224,33 @@ static void gen_wild_exponents(int k, double p[5][4], unsigned long long *s)
         }
 }
 
+/* Every value at one end of the double range or the other: subnormals next to values near
+ * DBL_MAX in one call, the largest integers the exact stage can need (and, under ASan, a check
+ * of its buffer sizes). */
+static void gen_extreme_spread(int k, double p[5][4], unsigned long long *s)
+{
+    for (int i = 0; i < npoints(k); i++)
+        for (int j = 0; j < 4; j++) {
+            double sign = rand_int(s, 0, 1) ? -1 : 1;
+            switch (rand_int(s, 0, 4)) {
+            case 0:
+                p[i][j] = sign * rand_int(s, 1, 7) * 0x1p-1074;
+                break;
+            case 1:
+                p[i][j] = sign * DBL_MAX * uniform(s, 0.5, 1);
+                break;
+            case 2:
+                p[i][j] = sign * uniform(s, 1, 2) * 0x1p-1060;
+                break;
+            case 3:
+                p[i][j] = sign * uniform(s, 1, 2) * 0x1p+1000;
+                break;
+            default:
+                p[i][j] = 0;
+            }
+        }
+}
+
 /* Multiplies coordinates by 2^e and weights by 2^(2e): exact unless it underflows. Returns 0
  * when a value overflowed (the case is then not usable). */
 static int scale_case(int k, double p[5][4], int e)
@@ -292,6 +319,11 @@ static void test_exact_sign_on_nearly_degenerate_points(void)
     run_generator("near", gen_near, 2500, 0);
 }
 
+static void test_exact_sign_on_values_from_both_ends_of_the_range(void)
+{
+    run_generator("extreme spread", gen_extreme_spread, 1000, 1);
+}
+
 static void test_exact_sign_on_values_of_any_exponent(void)
 {
     run_generator("wild exponent", gen_wild_exponents, 2000, 0);
@@ -355,11 +387,35 @@ static void test_extreme_values_are_decided_exactly(void)
     CHECK_EQ_INT(fl_orient2d(h0, h1, h2), -1);
 }
 
+/* Subnormal 2^-1074 next to +-DBL_MAX in every predicate: the exact stage's integers reach
+ * their largest sizes here (about 10,500 bits for insphere), which ASan checks against the
+ * buffers; the oracle checks the sign. */
+static void test_largest_exact_integers_give_exact_signs(void)
+{
+    double t = 0x1p-1074, M = DBL_MAX;
+    double base[5][4] = {
+        {M, -M, M, M}, {-M, M, -M, -M}, {M, M, -M, M}, {-M, -M, -M, -M}, {t, t, t, t}};
+    for (int k = 0; k < KINDS; k++) {
+        for (int last = 0; last < npoints(k); last++) { /* the tiny point in every position */
+            double p[5][4];
+            int n = npoints(k), r = 0;
+            for (int i = 0; i < n; i++)
+                memcpy(p[i], i == last ? base[4] : base[r++], sizeof p[i]);
+            if (kinds[k].dim == 2)
+                for (int i = 0; i < n; i++)
+                    p[i][2] = p[i][3];
+            CHECK_EQ_INT(call(k, p), oracle(k, p));
+        }
+    }
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_sign_conventions_match_the_documentation),
              FL_TEST_CASE(test_extreme_values_are_decided_exactly),
+             FL_TEST_CASE(test_largest_exact_integers_give_exact_signs),
              FL_TEST_CASE(test_exact_sign_on_uniform_random_points),
              FL_TEST_CASE(test_exact_sign_on_ulp_perturbed_integer_grid),
              FL_TEST_CASE(test_exact_sign_on_exactly_degenerate_points),
              FL_TEST_CASE(test_exact_sign_on_degenerate_points_with_full_precision_coordinates),
              FL_TEST_CASE(test_exact_sign_on_nearly_degenerate_points),
-             FL_TEST_CASE(test_exact_sign_on_values_of_any_exponent))
+             FL_TEST_CASE(test_exact_sign_on_values_of_any_exponent),
+             FL_TEST_CASE(test_exact_sign_on_values_from_both_ends_of_the_range))

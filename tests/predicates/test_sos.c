@@ -192,19 +192,54 @@ static void test_sos_flips_sign_when_two_points_swap_with_their_indices(void)
 }
 
 /* A point on the circle through a ccw triangle, with a higher index than its corners, is
- * inside (in conflict); with a lower index than all of them, outside. */
+ * inside (in conflict). With a lower index, the heaviest corner c decides: lowering its lift
+ * lowers the plane at d when d's barycentric coordinate for c is positive (d on c's side of
+ * line ab), which leaves d outside; otherwise d is inside. */
 static void test_incircle_sos_puts_later_cocircular_point_inside(void)
 {
-    double a[2] = {5, 0}, b[2] = {0, 5}, c[2] = {-5, 0}, d[2] = {3, -4};
+    double a[2] = {5, 0}, b[2] = {0, 5}, c[2] = {-5, 0}, d[2] = {3, -4}, d2[2] = {4, 3};
     CHECK_EQ_INT(fl_incircle(a, b, c, d), 0);
+    CHECK_EQ_INT(fl_incircle(a, b, c, d2), 0);
     CHECK_EQ_INT(fl_incircle_sos(a, b, c, d, 1, 2, 3, 4), 1);
+    CHECK_EQ_INT(fl_incircle_sos(a, b, c, d2, 1, 2, 3, 4), 1);
+    CHECK_EQ_INT(fl_orient2d(a, b, d), fl_orient2d(a, b, c)); /* d on c's side of ab */
     CHECK_EQ_INT(fl_incircle_sos(a, b, c, d, 1, 2, 3, 0), -1);
+    CHECK_EQ_INT(fl_orient2d(a, b, d2), -fl_orient2d(a, b, c)); /* d2 across ab */
+    CHECK_EQ_INT(fl_incircle_sos(a, b, c, d2, 1, 2, 3, 0), 1);
     double e[3] = {1, 2, 2}, f[3] = {2, 1, -2}, g[3] = {-2, 2, -1}, h[3] = {2, -2, 1};
     double x[3] = {-1, -2, -2};
     int o = fl_orient3d(e, f, g, h);
     CHECK(o != 0);
     CHECK_EQ_INT(fl_insphere(e, f, g, h, x), 0);
     CHECK_EQ_INT(fl_insphere_sos(e, f, g, h, x, 1, 2, 3, 4, 9), o);
+}
+
+/* Four cocircular points a, b, c, d in ccw order: the diagonal ac is locally Delaunay when d is
+ * outside circle(abc) and b outside circle(acd); bd when a is outside circle(bcd) and c outside
+ * circle(bda). Under the perturbation exactly one diagonal qualifies, for every index order. */
+static void test_exactly_one_diagonal_of_cocircular_quadrilateral_is_delaunay(void)
+{
+    /* the 12 integer points of x^2 + y^2 = 25 in ccw order */
+    static const double ring[12][2] = {{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4}, {-4, 3},
+                                       {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+    unsigned long long seed = 4242;
+    long quads = 0, bad = 0;
+    for (int i = 0; i < 12; i++)
+        for (int j = i + 1; j < 12; j++)
+            for (int k = j + 1; k < 12; k++)
+                for (int l = k + 1; l < 12; l++) {
+                    const double *a = ring[i], *b = ring[j], *c = ring[k], *d = ring[l];
+                    uint32_t x[4];
+                    random_indices(&seed, x, 4);
+                    int ac = fl_incircle_sos(a, b, c, d, x[0], x[1], x[2], x[3]) < 0 &&
+                             fl_incircle_sos(a, c, d, b, x[0], x[2], x[3], x[1]) < 0;
+                    int bd = fl_incircle_sos(b, c, d, a, x[1], x[2], x[3], x[0]) < 0 &&
+                             fl_incircle_sos(b, d, a, c, x[1], x[3], x[0], x[2]) < 0;
+                    quads++;
+                    bad += ac + bd != 1;
+                }
+    CHECK_EQ_INT(quads, 495);
+    CHECK_EQ_INT(bad, 0);
 }
 
 /* ---- brute-force Delaunay / regular triangulations through the SoS predicates ---- */
@@ -376,5 +411,6 @@ FL_TEST_MAIN(FL_TEST_CASE(test_sos_matches_symbolic_expansion_of_perturbed_deter
              FL_TEST_CASE(test_sos_is_zero_only_when_documented),
              FL_TEST_CASE(test_sos_flips_sign_when_two_points_swap_with_their_indices),
              FL_TEST_CASE(test_incircle_sos_puts_later_cocircular_point_inside),
+             FL_TEST_CASE(test_exactly_one_diagonal_of_cocircular_quadrilateral_is_delaunay),
              FL_TEST_CASE(test_sos_delaunay_of_cocircular_and_grid_points_is_a_triangulation),
              FL_TEST_CASE(test_sos_delaunay_of_cospherical_and_grid_points_is_a_tetrahedralization))

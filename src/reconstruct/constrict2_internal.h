@@ -1,0 +1,131 @@
+/* Internal state of 2D constriction (thesis ch. 5), shared by the files of src/reconstruct:
+ * reconstruct2.c (the public entry), reconstruct2_io.c (writing results),
+ * constrict2.c (Algorithm 5.1 on the Delaunay triangulation), criteria2.c (the keys),
+ * heap2.c (the priority queue), flip2.c (walking and inserting segments by edge flips),
+ * augment2.c (locked constriction, §5.4) and keep2.c (constrained constriction, §5.7).
+ * Not part of the public API. */
+#ifndef FL_CONSTRICT2_INTERNAL_H
+#define FL_CONSTRICT2_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/core.h"
+
+#define C2_NONE UINT32_MAX
+
+/* A heap entry: deleting boundary edge a->b (interior on its left) with triangle a b c. */
+typedef struct c2_entry {
+    double key;
+    uint32_t a, b, c;
+} c2_entry;
+
+/* Binary min-heap ordered by key, ties by (a, b, c) so runs are deterministic. */
+typedef struct c2_heap {
+    c2_entry *items;
+    size_t count, capacity;
+} c2_heap;
+
+int c2_heap_push(c2_heap *h, c2_entry e); /* 0, or -1 when out of memory */
+c2_entry c2_heap_pop(c2_heap *h);         /* requires count > 0 */
+void c2_heap_free(c2_heap *h);
+
+/* The pruned triangulation. Triangles keep the slots of the Delaunay triangulation; a deleted
+ * triangle has alive[t] = 0 and its living neighbours point to C2_NONE across the shared edge,
+ * so "adj == C2_NONE on a living triangle" means "boundary edge". Edge flips (augmentation and
+ * kept edges) rewrite two slots in place, so the living triangles always tile the region inside
+ * the current boundary. */
+typedef struct c2_state {
+    const double *xy;
+    size_t n, unique_count;
+    size_t tcount;
+    uint32_t *tri, *adj;
+    uint8_t *alive;
+    uint32_t *vtri;        /* per vertex: a living triangle at it (C2_NONE for duplicates) */
+    uint8_t *on_boundary;  /* per vertex */
+    uint32_t *bnext;       /* per boundary vertex: the next boundary vertex (counterclockwise) */
+    uint32_t *btri;        /* per boundary vertex v: the living triangle with edge v->bnext[v] */
+    size_t boundary_count; /* boundary vertices */
+    uint32_t *keep_nb;     /* 2 per vertex: partners along kept edges, C2_NONE when unused */
+    fl_reconstruct2_criterion criterion;
+    int augmented;   /* nonzero once edges of γ([-1,1],[c0,1]), c0 < 0, take part */
+    size_t *g_start; /* augmented mode: the graph's neighbours of v are g_nb[g_start[v] ..
+                        g_start[v+1]-1], sorted (Delaunay edges plus the extra edges) */
+    uint32_t *g_nb;
+    const uint32_t *dt_tri; /* the Delaunay triangulation as built (dt_count triangles) */
+    size_t dt_count;
+    c2_heap heap;
+} c2_state;
+
+static inline const double *c2_pt(const c2_state *s, uint32_t v)
+{
+    return s->xy + 2 * (size_t)v;
+}
+
+static inline int c2_is_kept(const c2_state *s, uint32_t p, uint32_t q)
+{
+    return s->keep_nb[2 * (size_t)p] == q || s->keep_nb[2 * (size_t)p + 1] == q;
+}
+
+/* §5.7 extended to the moment a kept edge's second end joins the boundary: vertex c may join
+ * through triangle a b c only if each kept partner of c already on the boundary is a or b, so
+ * that the kept edge becomes a boundary edge then; otherwise it would end as a chord, which no
+ * later deletion can turn into a boundary edge without dropping the points beyond it. */
+static inline int c2_keep_allows(const c2_state *s, uint32_t a, uint32_t b, uint32_t c)
+{
+    for (int j = 0; j < 2; j++) {
+        uint32_t k = s->keep_nb[2 * (size_t)c + j];
+        if (k != C2_NONE && k != a && k != b && s->on_boundary[k]) return 0;
+    }
+    return 1;
+}
+
+/* Corner of triangle t holding vertex v, or -1. */
+static inline int c2_corner(const c2_state *s, uint32_t t, uint32_t v)
+{
+    const uint32_t *c = s->tri + 3 * (size_t)t;
+    return c[0] == v ? 0 : c[1] == v ? 1 : c[2] == v ? 2 : -1;
+}
+
+/* criteria2.c: the key of deleting a->b with triangle a b c (counterclockwise) under s's
+ * criterion; smaller is deleted first. For the Voronoi skeleton the key depends on the living
+ * neighbours of face t (pass C2_NONE when a b c is not a face yet: the γ-indicator is used). */
+double c2_key(const c2_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t t);
+double c2_gamma_indicator(const double *a, const double *b, const double *c);
+
+/* constrict2.c: deletes face t whose edge a->b is on the boundary and whose third vertex is
+ * not, and pushes the new boundary edges' candidates. 0, or -1 when out of memory. */
+int c2_delete_face(c2_state *s, uint32_t t, uint32_t a);
+/* Pushes the removable candidates of boundary edge a->bnext[a] (the face in Delaunay mode;
+ * every γ-graph triangle in augmented mode). 0, or -1 when out of memory. */
+int c2_push_candidates(c2_state *s, uint32_t a);
+
+/* flip2.c: inserts segment a-b into the living triangulation by edge flips (Sloan's method)
+ * unless it is an edge already. Fails (returns 0, triangulation unchanged) when the segment
+ * leaves the region, passes through a vertex or crosses a kept edge; 1 on success, -1 when
+ * out of memory. */
+int c2_insert_segment(c2_state *s, uint32_t a, uint32_t b);
+/* Restores the constrained Delaunay property around the kept edges by Lawson's flips.
+ * 0, or -1 when out of memory. */
+int c2_restore_delaunay(c2_state *s);
+
+/* augment2.c: the augmented constriction (§5.4) run after constriction of the Delaunay
+ * triangulation locked. Tries c0 = -k/levels, k = 1..levels, and stores the c0 that brought
+ * the last point onto the boundary in *c0_used (NaN if none did). FL_OK or FL_ERR_NOMEM /
+ * cancelled. */
+fl_status c2_augment(c2_state *s, int levels, double *c0_used, fl_progress_fn progress,
+                     void *progress_user, fl_error *err);
+/* Runs Algorithm 5.1's loop (lines 3-8) until every point is on the boundary or the heap is
+ * empty. FL_OK or FL_ERR_NOMEM / cancelled. */
+fl_status c2_constrict(c2_state *s, fl_progress_fn progress, void *progress_user, fl_error *err);
+
+/* augment2.c: pushes every triangle a b c of the augmented graph with c inside (a->b being
+ * the boundary edge a->bnext[a]). 0, or -1 when out of memory. */
+int c2_push_graph_candidates(c2_state *s, uint32_t a);
+
+/* keep2.c: validates the kept edges (mapped to distinct points through rep[]) and inserts them
+ * into the full triangulation; fills keep_nb. */
+fl_status c2_keep_edges(c2_state *s, const uint32_t *rep, const uint32_t *keep, size_t count,
+                        fl_error *err);
+
+#endif /* FL_CONSTRICT2_INTERNAL_H */

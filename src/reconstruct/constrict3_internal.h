@@ -1,0 +1,68 @@
+/* Internal interface of 3D constriction (constrict3*.c): the keys that order removable boundary
+ * tetrahedra and the constriction state shared by the loop and the output extraction. */
+#ifndef FL_CONSTRICT3_INTERNAL_H
+#define FL_CONSTRICT3_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core/core.h"
+
+/* Corners of the face opposite corner k of a positively oriented tetrahedron, counterclockwise
+ * seen from outside it (the fl_dt3 convention in include/flintstone.h). */
+extern const int constrict3_face[4][3];
+
+/* γ-indicator (thesis Def. 5.2, eq. 5.2) of triangle a, b, c with respect to vertex l: with r
+ * the circumradius of a b c and R the circumradius of the tetrahedron a b c l, |γ| = 1 - r/R,
+ * positive when the circumsphere's centre lies on l's side of the plane of a b c, negative on
+ * the other side. In [-1, 1]; -1 for l nearly in the triangle's plane inside its circumcircle. */
+double constrict3_gamma_indicator(const double *a, const double *b, const double *c,
+                                  const double *l);
+
+/* Area change of removing tetrahedron t (thesis eq. 4.1): (inner face area - boundary face
+ * area) / total face area; `boundary_mask` has bit k set when the face opposite corner k is on
+ * the boundary. */
+double constrict3_area_change(const double *p, const uint32_t *t, unsigned boundary_mask);
+
+/* One candidate in the heap of removable boundary tetrahedra. `version` is the tetrahedron's
+ * version when it was pushed: a newer version makes the entry stale (lazy invalidation). */
+typedef struct constrict3_entry {
+    double key;
+    uint32_t tet;
+    uint32_t version;
+} constrict3_entry;
+
+/* Binary min-heap on key (ties: lower tetrahedron index, so runs are reproducible). */
+typedef struct constrict3_heap {
+    constrict3_entry *a;
+    size_t count, cap;
+} constrict3_heap;
+
+int constrict3_heap_push(constrict3_heap *h, constrict3_entry e); /* 0, or -1 on NOMEM */
+constrict3_entry constrict3_heap_pop(constrict3_heap *h);         /* count must be > 0 */
+void constrict3_heap_free(constrict3_heap *h);
+
+/* The state of constriction over a Delaunay tetrahedralization. A tetrahedron is in the
+ * region while removed[t] == 0; a face of a region tetrahedron is a boundary face when the
+ * neighbour across it is removed or absent (convex hull). */
+typedef struct constrict3_state {
+    const double *p;     /* input points */
+    size_t tet_count;    /* Delaunay tetrahedra */
+    const uint32_t *tet; /* 4 per tetrahedron */
+    const uint32_t *adj; /* 4 per tetrahedron, UINT32_MAX on the hull */
+    uint8_t *removed;    /* per tetrahedron */
+    uint32_t *version;   /* per tetrahedron: bumped when its boundary faces change */
+    uint32_t *bfaces;    /* per point: boundary faces incident to it */
+    size_t on_boundary;  /* distinct points with bfaces > 0 */
+    size_t region_count; /* tetrahedra not removed */
+} constrict3_state;
+
+/* Fills out's tri, tet, inside, counts and volume from the final state; 0 or -1 on NOMEM. */
+int constrict3_extract(const constrict3_state *s, const uint32_t *duplicate_of, size_t n,
+                       fl_reconstruction3 *out);
+
+/* Debug builds: 1 when the current boundary is closed, manifold, oriented and of genus 0
+ * (checked with fl_mesh_check). */
+int constrict3_boundary_is_sphere(const constrict3_state *s, size_t n);
+
+#endif /* FL_CONSTRICT3_INTERNAL_H */

@@ -1,0 +1,215 @@
+/* fl_reconstruct2: the public entry of 2D boundary construction. Builds the Delaunay
+ * triangulation, sets up the pruned-graph state on it, runs constriction (constrict2.c), the
+ * augmentation when locked (augment2.c), and extracts the polygon and its triangles. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "reconstruct/constrict2_internal.h"
+
+static void state_free(c2_state *s)
+{
+    free(s->tri);
+    free(s->adj);
+    free(s->alive);
+    free(s->vtri);
+    free(s->on_boundary);
+    free(s->bnext);
+    free(s->btri);
+    free(s->keep_nb);
+    free(s->g_start);
+    free(s->g_nb);
+    c2_heap_free(&s->heap);
+    memset(s, 0, sizeof *s);
+}
+
+/* Line 2 of Algorithm 5.1: the boundary of γ([-1,1],[0,1]) is the convex hull. */
+static fl_status state_init(c2_state *s, const double *xy, const fl_dt2 *dt,
+                            fl_reconstruct2_criterion criterion, fl_error *err)
+{
+    size_t n = dt->point_count, tc = dt->triangle_count;
+    memset(s, 0, sizeof *s);
+    s->xy = xy;
+    s->n = n;
+    s->unique_count = dt->unique_count;
+    s->tcount = tc;
+    s->criterion = criterion;
+    s->dt_tri = dt->tri;
+    s->dt_count = tc;
+    s->tri = fl_alloc_array(3 * tc, sizeof *s->tri);
+    s->adj = fl_alloc_array(3 * tc, sizeof *s->adj);
+    s->alive = fl_alloc_array(tc, 1);
+    s->vtri = fl_alloc_array(n, sizeof *s->vtri);
+    s->on_boundary = fl_calloc_array(n, 1);
+    s->bnext = fl_alloc_array(n, sizeof *s->bnext);
+    s->btri = fl_alloc_array(n, sizeof *s->btri);
+    s->keep_nb = fl_alloc_array(2 * n, sizeof *s->keep_nb);
+    if (!s->tri || !s->adj || !s->alive || !s->vtri || !s->on_boundary || !s->bnext || !s->btri ||
+        !s->keep_nb)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
+    memcpy(s->tri, dt->tri, 3 * tc * sizeof *s->tri);
+    memcpy(s->adj, dt->adj, 3 * tc * sizeof *s->adj);
+    memset(s->alive, 1, tc);
+    for (size_t i = 0; i < n; i++)
+        s->vtri[i] = s->bnext[i] = s->btri[i] = C2_NONE;
+    for (size_t i = 0; i < 2 * n; i++)
+        s->keep_nb[i] = C2_NONE;
+    for (size_t t = 0; t < tc; t++)
+        for (int k = 0; k < 3; k++) {
+            s->vtri[s->tri[3 * t + k]] = (uint32_t)t;
+            if (s->adj[3 * t + k] == C2_NONE) s->btri[s->tri[3 * t + (k + 1) % 3]] = (uint32_t)t;
+        }
+    for (size_t i = 0; i < dt->hull_count; i++) {
+        uint32_t v = dt->hull[i];
+        s->on_boundary[v] = 1;
+        s->bnext[v] = dt->hull[(i + 1) % dt->hull_count];
+    }
+    s->boundary_count = dt->hull_count;
+    return FL_OK;
+}
+
+static fl_status push_hull(c2_state *s, const fl_dt2 *dt, fl_error *err)
+{
+    for (size_t i = 0; i < dt->hull_count; i++)
+        if (c2_push_candidates(s, dt->hull[i]))
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the heap");
+    return FL_OK;
+}
+
+/* Why not every point made it, in words a user can act on (empty when all did). */
+static void explain(const c2_state *s, const fl_reconstruct2_options *o, double c0_tried,
+                    fl_reconstruction2 *out)
+{
+    size_t inside = s->unique_count - s->boundary_count;
+    out->all_on_boundary = 0;
+    if (inside > 0) {
+        if (o->extra_levels < 0)
+            snprintf(out->reason, sizeof out->reason,
+                     "constriction of the Delaunay triangulation locked with %zu point(s) inside "
+                     "and augmentation is disabled",
+                     inside);
+        else
+            snprintf(out->reason, sizeof out->reason,
+                     "constriction locked with %zu point(s) inside, even with the edges of "
+                     "gamma([-1,1],[%g,1])%s",
+                     inside, c0_tried, o->keep_count ? "; the kept edges may block it" : "");
+        return;
+    }
+    for (size_t v = 0; v < s->n; v++)
+        for (int j = 0; j < 2; j++) {
+            uint32_t w = s->keep_nb[2 * v + j];
+            if (w == C2_NONE || s->bnext[v] == w || s->bnext[w] == v) continue;
+            snprintf(out->reason, sizeof out->reason,
+                     "kept edge %zu-%u ends up inside the polygon, not on its boundary: no "
+                     "constriction keeps it",
+                     v, w);
+            return;
+        }
+    out->all_on_boundary = 1;
+}
+
+static fl_status extract(const c2_state *s, const fl_dt2 *dt, fl_reconstruction2 *out,
+                         fl_error *err)
+{
+    size_t live = 0;
+    for (size_t t = 0; t < s->tcount; t++)
+        live += s->alive[t];
+    out->boundary = fl_alloc_array(s->boundary_count, sizeof *out->boundary);
+    out->tri = fl_alloc_array(3 * live, sizeof *out->tri);
+    if (!out->boundary || !out->tri)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
+    uint32_t v = dt->hull[0]; /* hull vertices never leave the boundary */
+    double area2 = 0;
+    for (size_t i = 0; i < s->boundary_count; i++) {
+        out->boundary[i] = v;
+        uint32_t w = s->bnext[v];
+        const double *p = c2_pt(s, v), *q = c2_pt(s, w);
+        area2 += p[0] * q[1] - p[1] * q[0];
+        v = w;
+    }
+    out->boundary_count = s->boundary_count;
+    size_t j = 0;
+    for (size_t t = 0; t < s->tcount; t++)
+        if (s->alive[t]) memcpy(out->tri + 3 * j++, s->tri + 3 * t, 3 * sizeof *out->tri);
+    out->triangle_count = live;
+    out->area = area2 / 2;
+    return FL_OK;
+}
+
+static fl_status run(const double *xy, size_t n, const fl_reconstruct2_options *o,
+                     fl_reconstruction2 *out, fl_dt2 *dt, c2_state *s, fl_error *err)
+{
+    fl_dt2_options dopt = {o->progress, o->progress_user, 0};
+    fl_status st = fl_dt2_build(xy, n, &dopt, dt, err);
+    if (st != FL_OK) return st;
+    if ((st = state_init(s, xy, dt, o->criterion, err)) != FL_OK) return st;
+    if (o->keep_count &&
+        (st = c2_keep_edges(s, dt->duplicate_of, o->keep, o->keep_count, err)) != FL_OK)
+        return st;
+    if ((st = push_hull(s, dt, err)) != FL_OK) return st;
+    if ((st = c2_constrict(s, o->progress, o->progress_user, err)) != FL_OK) return st;
+    double c0 = NAN, tried = 0;
+    if (s->boundary_count < s->unique_count && o->extra_levels >= 0) {
+        int levels = o->extra_levels ? o->extra_levels : 10;
+        st = c2_augment(s, levels, &c0, o->progress, o->progress_user, err);
+        if (st != FL_OK) return st;
+        tried = -1;
+    }
+    out->point_count = n;
+    out->unique_count = dt->unique_count;
+    out->augmented_c0 = c0;
+    explain(s, o, tried, out);
+    if ((st = extract(s, dt, out, err)) != FL_OK) return st;
+    out->delaunay_count = dt->triangle_count;
+    out->delaunay_tri = dt->tri;
+    dt->tri = NULL;
+    return FL_OK;
+}
+
+fl_status fl_reconstruct2(const double *xy, size_t n, const fl_reconstruct2_options *opt,
+                          fl_reconstruction2 *out, fl_error *err)
+{
+    if (out) memset(out, 0, sizeof *out);
+    if (!out || (!xy && n > 0))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_reconstruct2: NULL buffer");
+    fl_reconstruct2_options o = {0};
+    if (opt) o = *opt;
+    if (o.criterion < FL_RECONSTRUCT2_GAMMA || o.criterion > FL_RECONSTRUCT2_VORONOI_SKELETON)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "unknown constriction criterion %d",
+                       (int)o.criterion);
+    if (o.keep_count && !o.keep)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "keep_count is %zu but keep is NULL",
+                       o.keep_count);
+    fl_dt2 dt = {0};
+    c2_state s;
+    memset(&s, 0, sizeof s);
+    fl_status st = run(xy, n, &o, out, &dt, &s, err);
+    state_free(&s);
+    fl_dt2_free(&dt);
+    if (st != FL_OK) fl_reconstruction2_free(out);
+    return st;
+}
+
+fl_status fl_reconstruct2_criterion_parse(const char *text, fl_reconstruct2_criterion *criterion,
+                                          fl_error *err)
+{
+    static const char *names[] = {"gamma", "area-change", "voronoi-skeleton"};
+    for (int i = 0; i < 3; i++)
+        if (text && criterion && strcmp(text, names[i]) == 0) {
+            *criterion = (fl_reconstruct2_criterion)i;
+            return FL_OK;
+        }
+    return fl_fail(err, FL_ERR_USAGE, NULL, -1,
+                   "unknown criterion '%s' (expected gamma, area-change or voronoi-skeleton)",
+                   text ? text : "(null)");
+}
+
+void fl_reconstruction2_free(fl_reconstruction2 *rec)
+{
+    if (!rec) return;
+    free(rec->boundary);
+    free(rec->tri);
+    free(rec->delaunay_tri);
+    memset(rec, 0, sizeof *rec);
+}

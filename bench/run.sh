@@ -16,7 +16,7 @@ build=${FL_BENCH_BUILD:-$root/build-bench}
 # Debian packages the bench needs: the build, the peers, node for the data conversion. Node and
 # npm are looked for as commands, since some machines have them from another nodejs package
 # that bundles npm.
-packages=(gcc make cmake libassimp-dev)
+packages=(gcc g++ make cmake libassimp-dev libcgal-dev qhull-bin tetgen)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -79,6 +79,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
   echo "- load average (1, 5, 15 min) at start: $load_start; at end: $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "- compiler: $(cc --version | head -1); flintstone built CMAKE_BUILD_TYPE=Release"
   echo "- peer: assimp $(dpkg-query -W -f='${Version}' libassimp-dev) (Debian libassimp-dev)"
+  echo "- peers (Delaunay): CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) (libcgal-dev, g++ -O2 -DNDEBUG), qhull $(dpkg-query -W -f='${Version}' qhull-bin) (qhull-bin), TetGen $(dpkg-query -W -f='${Version}' tetgen) (tetgen)"
   echo
   echo "| workload | ours (s) | peer | peer (s) | ratio ours/peer (wall) | ratio (CPU) | notes |"
   echo "|---|---:|---|---:|---:|---:|---|"
@@ -95,7 +96,8 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
     else printf "- %s: ours and %s are on par (ratio %.2f wall, %s CPU)\n", $2, $4, w, $6
   }' "$rows"
   echo
-  echo "Where the time goes when we are slower: see \"Findings\" in docs/benchmarks.md."
+  echo "Where the time goes when we are slower: see \"Findings\" in docs/benchmarks.md (readers) and"
+  echo "\"Benchmark\" in docs/delaunay.md (Delaunay: method, what each figure is, profiles)."
 } >"$results"
 echo "run: wrote $results" >&2
 cat "$results"

@@ -17,6 +17,7 @@ build=${FL_BENCH_BUILD:-$root/build-bench}
 # npm are looked for as commands, since some machines have them from another nodejs package
 # that bundles npm.
 packages=(gcc make cmake libassimp-dev)
+packages+=(g++ libcgal-dev) # check_mesh: the CGAL peer
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -79,6 +80,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
   echo "- load average (1, 5, 15 min) at start: $load_start; at end: $(cut -d' ' -f1-3 /proc/loadavg)"
   echo "- compiler: $(cc --version | head -1); flintstone built CMAKE_BUILD_TYPE=Release"
   echo "- peer: assimp $(dpkg-query -W -f='${Version}' libassimp-dev) (Debian libassimp-dev)"
+  echo "- peer: CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) (Debian libcgal-dev)"
   echo
   echo "| workload | ours (s) | peer | peer (s) | ratio ours/peer (wall) | ratio (CPU) | notes |"
   echo "|---|---:|---|---:|---:|---:|---|"

@@ -1,0 +1,290 @@
+// The reference for `flintstone check` (bench/workloads/check_mesh.sh): the same questions about
+// a mesh file answered by CGAL (Debian libcgal-dev), printed as one JSON line per file.
+//
+//   cgal_check FILE...            the validation (below)
+//   cgal_check --timing FILE...   what a CGAL user would run to check a triangle mesh file:
+//                                 CGAL::IO::read_polygon_mesh into a Surface_mesh, then the
+//                                 mesh checks below (no soup figures: those are our own code)
+//
+// The validation, and which CGAL function computes what:
+//  - the file is read as a polygon soup (CGAL::IO::read_polygon_soup; STL points are merged
+//    by the reader, like our STL reader's weld) and every polygon is fan-triangulated from its
+//    first corner, (i0, i(k-1), ik), which is what our readers do;
+//  - from the soup itself: vertices, faces, distinct undirected edges and how many faces each
+//    has (closed: every edge in exactly two faces), unreferenced points, degenerate faces (a
+//    repeated index, or CGAL::collinear), area (soup_area, for files CGAL cannot make a mesh of);
+//  - PMP::is_polygon_soup_a_polygon_mesh says whether the soup is an oriented combinatorial
+//    manifold as given; if not, PMP::orient_polygon_soup tries to reorient it and says whether
+//    it had to duplicate points (non-manifold vertex or edge, or not orientable; the number of
+//    added points is points_duplicated, the vertices it reports non-manifold are
+//    nonmanifold_vertices). When it did not, the soup becomes a CGAL::Surface_mesh
+//    (PMP::polygon_soup_to_polygon_mesh) with the same vertices, and on that mesh:
+//    CGAL::is_closed, PMP::connected_components (faces joined through edges), V - E + F per
+//    component and the genus of each closed component, PMP::is_degenerate_triangle_face,
+//    PMP::self_intersections (pairs (f, f) are CGAL's way of flagging a degenerate face and
+//    are counted apart), PMP::area and, when closed, PMP::volume.
+//  - wall-clock seconds in this process: read_s (soup and triangulation; with --timing, the
+//    whole read_polygon_mesh), soup_s (the soup figures), mesh_s (polygon-mesh test,
+//    reorientation if needed, Surface_mesh construction), check_s (closed, components, Euler,
+//    degenerate, area, volume on the Surface_mesh), self_intersections_s.
+// Nothing is repaired beyond the reorientation, so a mesh CGAL cannot hold as a Surface_mesh
+// gets `"surface_mesh": false` and no mesh figures.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/shape_predicates.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef std::vector<std::size_t> Polygon;
+
+static double now()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+// Figures computed from the triangle soup alone (valid for every file that reads).
+struct SoupFigures {
+    std::size_t edges = 0, boundary_edges = 0, nonmanifold_edges = 0;
+    std::size_t unreferenced = 0, degenerate = 0;
+    double area = 0; // sum of sqrt(CGAL::squared_area), as PMP::area does face by face
+    bool closed = false;
+};
+
+static SoupFigures soup_figures(const std::vector<Point> &pts, const std::vector<Polygon> &tris)
+{
+    SoupFigures s;
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> edge_faces;
+    std::vector<char> used(pts.size(), 0);
+    for (const Polygon &t : tris) {
+        for (int k = 0; k < 3; k++) {
+            std::size_t a = t[k], b = t[(k + 1) % 3];
+            edge_faces[std::make_pair(std::min(a, b), std::max(a, b))]++;
+            used[a] = 1;
+        }
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+            CGAL::collinear(pts[t[0]], pts[t[1]], pts[t[2]]))
+            s.degenerate++;
+        s.area += std::sqrt(CGAL::squared_area(pts[t[0]], pts[t[1]], pts[t[2]]));
+    }
+    s.edges = edge_faces.size();
+    for (const auto &e : edge_faces) {
+        if (e.second == 1) s.boundary_edges++;
+        if (e.second >= 3) s.nonmanifold_edges++;
+    }
+    for (char u : used) s.unreferenced += !u;
+    s.closed = !tris.empty() && s.boundary_edges == 0 && s.nonmanifold_edges == 0;
+    for (const auto &e : edge_faces)
+        if (e.second != 2) s.closed = false;
+    return s;
+}
+
+// Euler characteristic and closedness of each connected component of a Surface_mesh.
+struct ComponentFigures {
+    std::vector<long long> v, e, f;
+    std::vector<char> open;
+};
+
+static ComponentFigures component_figures(const Mesh &m, Mesh::Property_map<Mesh::Face_index,
+                                                                             std::size_t> comp,
+                                          std::size_t n)
+{
+    ComponentFigures c;
+    c.v.assign(n, 0);
+    c.e.assign(n, 0);
+    c.f.assign(n, 0);
+    c.open.assign(n, 0);
+    for (Mesh::Face_index f : m.faces()) c.f[comp[f]]++;
+    for (Mesh::Edge_index e : m.edges()) {
+        Mesh::Halfedge_index h = m.halfedge(e);
+        bool border = m.is_border(h) || m.is_border(m.opposite(h));
+        if (m.is_border(h)) h = m.opposite(h);
+        std::size_t c0 = comp[m.face(h)];
+        c.e[c0]++;
+        if (border) c.open[c0] = 1;
+    }
+    for (Mesh::Vertex_index v : m.vertices()) {
+        for (Mesh::Halfedge_index h : CGAL::halfedges_around_target(v, m)) {
+            if (!m.is_border(h)) {
+                c.v[comp[m.face(h)]]++;
+                break;
+            }
+        }
+    }
+    return c;
+}
+
+// Counts what orient_polygon_soup reports: vertices whose link (the polygons around them,
+// joined through edges with two compatibly oriented polygons) has more than one component.
+struct Singularity_counter : public PMP::Default_orientation_visitor {
+    std::size_t *nonmanifold_vertices;
+    explicit Singularity_counter(std::size_t *n) : nonmanifold_vertices(n) {}
+    void non_manifold_vertex(std::size_t, std::size_t) { ++*nonmanifold_vertices; }
+};
+
+static void json_bool(const char *key, bool b)
+{
+    std::printf(",\"%s\":%s", key, b ? "true" : "false");
+}
+
+// The checks on a Surface_mesh; prints the rest of the JSON object (from a leading comma) and
+// closes it. t_read and t_mesh are the seconds already spent getting m.
+static void mesh_checks(Mesh &m, double t_read, double t_soup, double t_mesh)
+{
+    double t0 = now();
+    bool closed = CGAL::is_closed(m);
+    auto comp = m.add_property_map<Mesh::Face_index, std::size_t>("f:cc", 0).first;
+    std::size_t ncomp = PMP::connected_components(m, comp);
+    ComponentFigures c = component_figures(m, comp, ncomp);
+    // Summed over the components, so that isolated vertices (polygon_soup_to_polygon_mesh
+    // makes a vertex of every point, used or not) do not count: ours counts referenced ones.
+    long long euler = 0;
+    for (std::size_t i = 0; i < ncomp; i++) euler += c.v[i] - c.e[i] + c.f[i];
+    std::size_t degenerate = 0;
+    for (Mesh::Face_index f : m.faces()) degenerate += PMP::is_degenerate_triangle_face(f, m);
+    double area = PMP::area(m);
+    double volume = closed ? PMP::volume(m) : NAN;
+    double t_check = now() - t0;
+
+    t0 = now();
+    std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+    PMP::self_intersections(m, std::back_inserter(pairs));
+    std::size_t si = 0, si_degenerate = 0;
+    for (const auto &p : pairs) (p.first == p.second ? si_degenerate : si)++;
+    double t_si = now() - t0;
+
+    json_bool("mesh_closed", closed);
+    std::printf(",\"mesh_vertices\":%zu,\"mesh_edges\":%zu,\"mesh_faces\":%zu,\"components\":%zu,"
+                "\"euler\":%lld,\"component_genus\":[",
+                (std::size_t)m.number_of_vertices(), (std::size_t)m.number_of_edges(),
+                (std::size_t)m.number_of_faces(), ncomp, euler);
+    for (std::size_t i = 0; i < ncomp; i++) {
+        long long chi = c.v[i] - c.e[i] + c.f[i];
+        if (c.open[i])
+            std::printf("%snull", i ? "," : "");
+        else
+            std::printf("%s%lld", i ? "," : "", (2 - chi) / 2);
+    }
+    std::printf("],\"component_euler\":[");
+    for (std::size_t i = 0; i < ncomp; i++)
+        std::printf("%s%lld", i ? "," : "", c.v[i] - c.e[i] + c.f[i]);
+    std::printf("],\"mesh_degenerate_faces\":%zu,\"self_intersections\":%zu,"
+                "\"self_intersections_degenerate\":%zu,\"area\":%.17g",
+                degenerate, si, si_degenerate, area);
+    if (closed)
+        std::printf(",\"volume\":%.17g", volume);
+    else
+        std::printf(",\"volume\":null");
+    std::printf(",\"read_s\":%.6f,\"soup_s\":%.6f,\"mesh_s\":%.6f,\"check_s\":%.6f,"
+                "\"self_intersections_s\":%.6f}\n",
+                t_read, t_soup, t_mesh, t_check, t_si);
+}
+
+// The validation: soup figures, then the mesh checks when CGAL can hold the soup as a mesh.
+static int check_file(const char *path)
+{
+    double t0 = now();
+    std::vector<Point> pts;
+    std::vector<Polygon> polys;
+    if (!CGAL::IO::read_polygon_soup(std::string(path), pts, polys)) {
+        std::printf("{\"file\":\"%s\",\"error\":\"CGAL::IO::read_polygon_soup failed\"}\n", path);
+        return 1;
+    }
+    std::vector<Polygon> tris;
+    std::size_t non_triangles = 0;
+    for (const Polygon &p : polys) {
+        if (p.size() != 3) non_triangles++;
+        for (std::size_t k = 2; k < p.size(); k++) tris.push_back(Polygon{p[0], p[k - 1], p[k]});
+    }
+    double t_read = now() - t0;
+
+    t0 = now();
+    SoupFigures s = soup_figures(pts, tris);
+    double t_soup = now() - t0;
+
+    t0 = now();
+    bool as_given = PMP::is_polygon_soup_a_polygon_mesh(tris);
+    bool reoriented = false, mesh_ok = as_given;
+    std::size_t nonmanifold_vertices = 0;
+    std::vector<Point> opts;
+    std::vector<Polygon> otris;
+    if (!as_given && !tris.empty()) {
+        opts = pts;
+        otris = tris;
+        reoriented = PMP::orient_polygon_soup(
+            opts, otris, CGAL::parameters::visitor(Singularity_counter(&nonmanifold_vertices)));
+        mesh_ok = reoriented && PMP::is_polygon_soup_a_polygon_mesh(otris);
+    }
+    std::printf("{\"file\":\"%s\",\"vertices\":%zu,\"faces\":%zu,\"polygons\":%zu,"
+                "\"non_triangle_polygons\":%zu,\"edges\":%zu,\"boundary_edges\":%zu,"
+                "\"nonmanifold_edges\":%zu,\"unreferenced_vertices\":%zu,\"degenerate_faces\":%zu,"
+                "\"soup_area\":%.17g",
+                path, pts.size(), tris.size(), polys.size(), non_triangles, s.edges,
+                s.boundary_edges, s.nonmanifold_edges, s.unreferenced, s.degenerate, s.area);
+    json_bool("closed", s.closed);
+    json_bool("polygon_mesh_as_given", as_given);
+    json_bool("reoriented_without_split", reoriented);
+    json_bool("surface_mesh", mesh_ok && !tris.empty());
+    std::printf(",\"points_duplicated\":%zu,\"nonmanifold_vertices\":%zu",
+                opts.empty() ? 0 : opts.size() - pts.size(), nonmanifold_vertices);
+    if (!mesh_ok || tris.empty()) {
+        std::printf(",\"read_s\":%.6f,\"soup_s\":%.6f,\"mesh_s\":%.6f}\n", t_read, t_soup,
+                    now() - t0);
+        return 0;
+    }
+    Mesh m;
+    if (as_given)
+        PMP::polygon_soup_to_polygon_mesh(pts, tris, m);
+    else
+        PMP::polygon_soup_to_polygon_mesh(opts, otris, m);
+    mesh_checks(m, t_read, t_soup, now() - t0);
+    return 0;
+}
+
+// --timing: what a CGAL user checking a triangle mesh file would run. CGAL::IO::read_polygon_mesh
+// builds the Surface_mesh face by face (Euler::add_face refuses what it cannot hold), then the
+// same checks; no soup figures (those are our own code, not CGAL's).
+static int time_file(const char *path)
+{
+    double t0 = now();
+    Mesh m;
+    if (!CGAL::IO::read_polygon_mesh(std::string(path), m) || !CGAL::is_triangle_mesh(m)) {
+        std::printf("{\"file\":\"%s\",\"error\":\"not a triangle Surface_mesh\"}\n", path);
+        return 1;
+    }
+    double t_read = now() - t0;
+    std::printf("{\"file\":\"%s\",\"vertices\":%zu,\"faces\":%zu", path,
+                (std::size_t)m.number_of_vertices(), (std::size_t)m.number_of_faces());
+    mesh_checks(m, t_read, 0, 0);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: cgal_check [--timing] FILE...\n");
+        return 2;
+    }
+    bool timing = std::string(argv[1]) == "--timing";
+    int failed = 0;
+    for (int i = timing ? 2 : 1; i < argc; i++)
+        failed |= timing ? time_file(argv[i]) : check_file(argv[i]);
+    return failed;
+}

@@ -11,10 +11,15 @@
 //    are from the soup, so every file that reads has them);
 //  - manifold: CGAL's soup is manifold when no edge has three or more faces and
 //    orient_polygon_soup did not have to duplicate a point (ours: no non-manifold edge or vertex);
-//  - components, Euler characteristic, genus, self-intersections, volume: only when CGAL holds
-//    the soup as a Surface_mesh. Components then agree by construction of the definitions: ours
-//    join triangles through shared vertices, CGAL's through shared edges, and the two differ
-//    only at a non-manifold vertex, which a Surface_mesh cannot have.
+//  - components, Euler characteristic, genus, self-intersections (PMP::self_intersections),
+//    volume: when CGAL holds the soup as a Surface_mesh. Components must then agree although
+//    the definitions differ: ours join triangles through shared vertices, CGAL's through shared
+//    edges, and the two differ only at a non-manifold vertex, which a Surface_mesh cannot have.
+//    When CGAL cannot, but the soup cut at its singular vertices is a mesh, ours must equal the
+//    cut mesh's V - E + F minus the points added, and the cut mesh's components joined again
+//    at the copied points; its components through edges alone may outnumber ours (marked as a
+//    definition difference);
+//  - self-intersections on the soup (the peer's soup_self_intersections): every file.
 //  - genus and volume: ours are undefined (null) for a mesh that is not consistently oriented,
 //    while CGAL reorients the soup first; such a pair is marked as a definition difference.
 'use strict';
@@ -56,10 +61,23 @@ function compare(o, c) {
   if (o.manifold && cgalManifold) eq('oriented', o.oriented, c.polygon_mesh_as_given);
   const ca = c.area !== undefined ? c.area : c.soup_area; // PMP::area when CGAL has a mesh
   put('area', o.area, ca, relDiff(o.area, ca) <= REL_TOL ? 'ok' : 'DIFF');
+  // Every file: CGAL's predicates on the soup, pairs decided as PMP decides them (the peer's
+  // soup_self_intersections); where PMP::self_intersections ran too, the two must agree.
+  eq('self_intersections_soup', o.self_intersections, c.soup_self_intersections);
   if (!c.surface_mesh) {
-    for (const k of ['components', 'euler', 'genus', 'self_intersections', 'volume']) put(k, o[k], null, 'n/a');
+    // CGAL cut the soup at its singular vertices: the pieces' V - E + F is ours plus the points
+    // it added; its components (through edges) may be more than ours (through vertices).
+    if (c.split_euler !== undefined) {
+      eq('euler', o.euler, c.split_euler - c.points_duplicated);
+      eq('components', o.components, c.split_components_joined);
+      put('edge_components', o.components, c.split_components, o.components === c.split_components ? 'ok' : 'def');
+    } else {
+      for (const k of ['components', 'euler']) put(k, o[k], null, 'n/a');
+    }
+    for (const k of ['genus', 'self_intersections', 'volume']) put(k, o[k], null, 'n/a');
     return p;
   }
+  eq('pmp_vs_soup_self_intersections', c.self_intersections, c.soup_self_intersections);
   eq('mesh_closed', c.closed, c.mesh_closed);
   eq('components', o.components, c.components);
   eq('euler', o.euler, c.euler);
@@ -108,17 +126,21 @@ function main() {
     if (defs.length) verdict += ` (definitions: ${defs.join(', ')})`;
     if (na) verdict += ' (CGAL: no Surface_mesh)';
     const pair = (k, f = (x) => x) => (p[k] ? `${f(p[k].ours)} / ${p[k].status === 'n/a' ? '–' : f(p[k].cgal)}` : '–');
+    // Where CGAL has no Surface_mesh, its figures come from the soup or the cut mesh: marked *.
+    const star = na ? '*' : '';
     const man = `${yn(o.manifold)} / ${yn(p.manifold.cgal)}`;
     const genus = na ? `${genusShown(o.component_genus)} / –` : `${genusShown(o.component_genus)} / ${genusShown(c.component_genus)}`;
     const vol = p.volume && p.volume.rel !== undefined ? fmtRel(p.volume.rel) : '–';
-    rows.push(`| ${short(file)} | ${o.faces} | ${pair('closed', yn)} | ${man} | ${pair('components')} | ` +
-      `${pair('euler')} | ${genus} | ${pair('self_intersections')} | ${vol} | ${verdict} |`);
+    const comps = p.edge_components && p.edge_components.status === 'def'
+      ? `${pair('components')}* (${p.edge_components.cgal} through edges)` : `${pair('components')}${star}`;
+    rows.push(`| ${short(file)} | ${o.faces} | ${pair('closed', yn)} | ${man} | ${comps} | ` +
+      `${pair('euler')}${star} | ${genus} | ${pair('self_intersections_soup')}${star} | ${vol} | ${verdict} |`);
   }
 
   const total = ours.size;
   console.log(`${total} files; both read ${total - readErrors}; every compared property agrees on ${allAgree}.`);
   console.log('');
-  console.log('| property | agree | differ | definition difference | not comparable (CGAL has no Surface_mesh) |');
+  console.log('| property | agree | differ | definition difference | not comparable |');
   console.log('|---|---:|---:|---:|---:|');
   for (const [k, t] of tally) console.log(`| ${k} | ${t.ok} | ${t.DIFF} | ${t.def} | ${t['n/a']} |`);
   console.log('');

@@ -12,7 +12,8 @@
 //    first corner, (i0, i(k-1), ik), which is what our readers do;
 //  - from the soup itself: vertices, faces, distinct undirected edges and how many faces each
 //    has (closed: every edge in exactly two faces), unreferenced points, degenerate faces (a
-//    repeated index, or CGAL::collinear), area (soup_area, for files CGAL cannot make a mesh of);
+//    repeated index, or CGAL::collinear), area (soup_area, for files CGAL cannot make a mesh of),
+//    self-intersecting pairs (soup_self_intersections, see soup_self_intersections below);
 //  - PMP::is_polygon_soup_a_polygon_mesh says whether the soup is an oriented combinatorial
 //    manifold as given; if not, PMP::orient_polygon_soup tries to reorient it and says whether
 //    it had to duplicate points (non-manifold vertex or edge, or not orientable; the number of
@@ -28,7 +29,9 @@
 //    reorientation if needed, Surface_mesh construction), check_s (closed, components, Euler,
 //    degenerate, area, volume on the Surface_mesh), self_intersections_s.
 // Nothing is repaired beyond the reorientation, so a mesh CGAL cannot hold as a Surface_mesh
-// gets `"surface_mesh": false` and no mesh figures.
+// gets `"surface_mesh": false` and no mesh figures; when the soup cut at its singularities is
+// a mesh, its components and V - E + F are printed as split_components and split_euler, and
+// its components joined again where a point was copied as split_components_joined.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -39,6 +42,7 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/shape_predicates.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <chrono>
 #include <cmath>
@@ -96,6 +100,68 @@ static SoupFigures soup_figures(const std::vector<Point> &pts, const std::vector
     return s;
 }
 
+// Self-intersecting pairs of a triangle soup: for files CGAL cannot hold as a Surface_mesh
+// (PMP::self_intersections needs one), and as a cross-check where it can. The candidate pairs
+// come from CGAL::box_self_intersection_d on closed boxes, as in PMP::self_intersections, and
+// each pair is decided as PMP's do_faces_intersect decides it, with shared vertices recognised
+// by index instead of by halfedge: a shared edge uv intersects iff the four points are
+// coplanar and the third corners lie on the same side of uv; one shared vertex v iff the side
+// opposite v of either triangle meets the other; none iff the triangles meet. A face repeated
+// (three shared indices; a Surface_mesh cannot hold it) counts, as ours does. Degenerate faces
+// take no part (PMP pairs them with themselves instead).
+typedef CGAL::Box_intersection_d::Box_with_info_d<double, 3, std::size_t,
+                                                  CGAL::Box_intersection_d::ID_FROM_BOX_ADDRESS>
+    Soup_box;
+
+static bool soup_pair_intersects(const std::vector<Point> &p, const Polygon &a, const Polygon &b)
+{
+    int shared = 0, ia = -1, ib = -1; // ia, ib: positions of the (last) shared index
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            if (a[i] == b[j]) {
+                shared++;
+                ia = i;
+                ib = j;
+            }
+    if (shared == 3) return true;
+    if (shared == 2) {
+        int ra = 0, rb = 0; // the corners that are not shared
+        for (int i = 0; i < 3; i++) {
+            if (a[i] != b[0] && a[i] != b[1] && a[i] != b[2]) ra = i;
+            if (b[i] != a[0] && b[i] != a[1] && b[i] != a[2]) rb = i;
+        }
+        const Point &u = p[a[(ra + 1) % 3]], &v = p[a[(ra + 2) % 3]];
+        return CGAL::coplanar(u, v, p[a[ra]], p[b[rb]]) &&
+               CGAL::coplanar_orientation(u, v, p[a[ra]], p[b[rb]]) == CGAL::POSITIVE;
+    }
+    K::Triangle_3 ta(p[a[0]], p[a[1]], p[a[2]]), tb(p[b[0]], p[b[1]], p[b[2]]);
+    if (shared == 1)
+        return CGAL::do_intersect(ta, K::Segment_3(p[b[(ib + 1) % 3]], p[b[(ib + 2) % 3]])) ||
+               CGAL::do_intersect(tb, K::Segment_3(p[a[(ia + 1) % 3]], p[a[(ia + 2) % 3]]));
+    return CGAL::do_intersect(ta, tb);
+}
+
+static std::size_t soup_self_intersections(const std::vector<Point> &p,
+                                           const std::vector<Polygon> &tris)
+{
+    std::vector<Soup_box> boxes;
+    for (std::size_t t = 0; t < tris.size(); t++) {
+        const Polygon &f = tris[t];
+        if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2] ||
+            CGAL::collinear(p[f[0]], p[f[1]], p[f[2]]))
+            continue;
+        boxes.push_back(Soup_box(p[f[0]].bbox() + p[f[1]].bbox() + p[f[2]].bbox(), t));
+    }
+    std::vector<const Soup_box *> ptrs;
+    for (const Soup_box &b : boxes) ptrs.push_back(&b);
+    std::size_t count = 0;
+    CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
+        ptrs.begin(), ptrs.end(), [&](const Soup_box *x, const Soup_box *y) {
+            count += soup_pair_intersects(p, tris[x->info()], tris[y->info()]);
+        });
+    return count;
+}
+
 // Euler characteristic and closedness of each connected component of a Surface_mesh.
 struct ComponentFigures {
     std::vector<long long> v, e, f;
@@ -133,11 +199,50 @@ static ComponentFigures component_figures(const Mesh &m, Mesh::Property_map<Mesh
 
 // Counts what orient_polygon_soup reports: vertices whose link (the polygons around them,
 // joined through edges with two compatibly oriented polygons) has more than one component.
+// Also keeps each added point with the point it copies, to join the pieces again.
 struct Singularity_counter : public PMP::Default_orientation_visitor {
     std::size_t *nonmanifold_vertices;
-    explicit Singularity_counter(std::size_t *n) : nonmanifold_vertices(n) {}
+    std::vector<std::pair<std::size_t, std::size_t>> *copies;
+    Singularity_counter(std::size_t *n, std::vector<std::pair<std::size_t, std::size_t>> *c)
+        : nonmanifold_vertices(n), copies(c)
+    {
+    }
     void non_manifold_vertex(std::size_t, std::size_t) { ++*nonmanifold_vertices; }
+    void duplicated_vertex(std::size_t from, std::size_t to) { copies->emplace_back(from, to); }
 };
+
+static std::size_t find_root(std::vector<std::size_t> &parent, std::size_t i)
+{
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+// Components of the cut mesh joined again through the points orient_polygon_soup copied:
+// components through shared vertices, as ours counts them. polygon_soup_to_polygon_mesh makes
+// vertex i of point i (checked; returns 0 if not).
+static std::size_t vertex_joined_components(
+    const Mesh &m, Mesh::Property_map<Mesh::Face_index, std::size_t> comp, std::size_t ncomp,
+    const std::vector<Point> &pts, const std::vector<std::pair<std::size_t, std::size_t>> &copies)
+{
+    if (m.number_of_vertices() != pts.size()) return 0;
+    std::vector<std::size_t> parent(ncomp);
+    for (std::size_t i = 0; i < ncomp; i++) parent[i] = i;
+    std::size_t joined = ncomp;
+    for (const auto &cp : copies) {
+        Mesh::Vertex_index a(static_cast<Mesh::size_type>(cp.first)),
+            b(static_cast<Mesh::size_type>(cp.second));
+        if (m.point(a) != pts[cp.first] || m.point(b) != pts[cp.second]) return 0;
+        Mesh::Halfedge_index ha = m.halfedge(a), hb = m.halfedge(b);
+        if (m.is_border(ha)) ha = m.opposite(m.next(ha));
+        if (m.is_border(hb)) hb = m.opposite(m.next(hb));
+        std::size_t ra = find_root(parent, comp[m.face(ha)]), rb = find_root(parent, comp[m.face(hb)]);
+        if (ra != rb) {
+            parent[ra] = rb;
+            joined--;
+        }
+    }
+    return joined;
+}
 
 static void json_bool(const char *key, bool b)
 {
@@ -217,27 +322,31 @@ static int check_file(const char *path)
 
     t0 = now();
     SoupFigures s = soup_figures(pts, tris);
+    std::size_t soup_si = soup_self_intersections(pts, tris);
     double t_soup = now() - t0;
 
     t0 = now();
     bool as_given = PMP::is_polygon_soup_a_polygon_mesh(tris);
     bool reoriented = false, mesh_ok = as_given;
     std::size_t nonmanifold_vertices = 0;
+    std::vector<std::pair<std::size_t, std::size_t>> copies;
     std::vector<Point> opts;
     std::vector<Polygon> otris;
     if (!as_given && !tris.empty()) {
         opts = pts;
         otris = tris;
         reoriented = PMP::orient_polygon_soup(
-            opts, otris, CGAL::parameters::visitor(Singularity_counter(&nonmanifold_vertices)));
+            opts, otris,
+            CGAL::parameters::visitor(Singularity_counter(&nonmanifold_vertices, &copies)));
         mesh_ok = reoriented && PMP::is_polygon_soup_a_polygon_mesh(otris);
     }
     std::printf("{\"file\":\"%s\",\"vertices\":%zu,\"faces\":%zu,\"polygons\":%zu,"
                 "\"non_triangle_polygons\":%zu,\"edges\":%zu,\"boundary_edges\":%zu,"
                 "\"nonmanifold_edges\":%zu,\"unreferenced_vertices\":%zu,\"degenerate_faces\":%zu,"
-                "\"soup_area\":%.17g",
+                "\"soup_area\":%.17g,\"soup_self_intersections\":%zu",
                 path, pts.size(), tris.size(), polys.size(), non_triangles, s.edges,
-                s.boundary_edges, s.nonmanifold_edges, s.unreferenced, s.degenerate, s.area);
+                s.boundary_edges, s.nonmanifold_edges, s.unreferenced, s.degenerate, s.area,
+                soup_si);
     json_bool("closed", s.closed);
     json_bool("polygon_mesh_as_given", as_given);
     json_bool("reoriented_without_split", reoriented);
@@ -245,6 +354,21 @@ static int check_file(const char *path)
     std::printf(",\"points_duplicated\":%zu,\"nonmanifold_vertices\":%zu",
                 opts.empty() ? 0 : opts.size() - pts.size(), nonmanifold_vertices);
     if (!mesh_ok || tris.empty()) {
+        // orient_polygon_soup cut the surface at its singular vertices (and edges). When the
+        // result is a polygon mesh, its components are the original soup's faces joined
+        // through edges, and its V - E + F exceeds the soup's by the points added.
+        if (!tris.empty() && PMP::is_polygon_soup_a_polygon_mesh(otris)) {
+            Mesh split;
+            PMP::polygon_soup_to_polygon_mesh(opts, otris, split);
+            auto comp = split.add_property_map<Mesh::Face_index, std::size_t>("f:cc", 0).first;
+            std::size_t ncomp = PMP::connected_components(split, comp);
+            ComponentFigures c = component_figures(split, comp, ncomp);
+            long long euler = 0;
+            for (std::size_t i = 0; i < ncomp; i++) euler += c.v[i] - c.e[i] + c.f[i];
+            std::printf(",\"split_components\":%zu,\"split_euler\":%lld,"
+                        "\"split_components_joined\":%zu",
+                        ncomp, euler, vertex_joined_components(split, comp, ncomp, opts, copies));
+        }
         std::printf(",\"read_s\":%.6f,\"soup_s\":%.6f,\"mesh_s\":%.6f}\n", t_read, t_soup,
                     now() - t0);
         return 0;

@@ -69,7 +69,7 @@ json_values() {
 json_median() { json_values "$1" "$2" | median; }
 
 # The largest meshes that CGAL holds as a Surface_mesh (its self-intersection search needs one).
-for name in refined_elephant bunny00 armadillo diplodocus; do
+for name in ${CHECK_TIMED-refined_elephant bunny00 armadillo diplodocus}; do
   path=$BENCH_CACHE/cgal/data/meshes/$name.off
   [ -e "$path" ] || { echo "ERROR|check_$name|missing $path"; continue; }
   rm -f "$out"/t_* "$out"/j_*

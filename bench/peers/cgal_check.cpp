@@ -5,6 +5,7 @@
 //   cgal_check --timing FILE...   what a CGAL user would run to check a triangle mesh file:
 //                                 CGAL::IO::read_polygon_mesh into a Surface_mesh, then the
 //                                 mesh checks below (no soup figures: those are our own code)
+//   cgal_check --si REPS FILE     PMP::self_intersections alone, REPS timed runs (medians)
 //
 // The validation, and which CGAL function computes what:
 //  - the file is read as a polygon soup (CGAL::IO::read_polygon_soup; STL points are merged
@@ -44,7 +45,10 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/box_intersection_d.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <ctime>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -400,12 +404,48 @@ static int time_file(const char *path)
     return 0;
 }
 
+// --si REPS: PMP::self_intersections alone on a mesh read once (the counterpart of
+// bench/ours_check.c): one untimed warm-up, then REPS runs; medians of wall and process CPU time.
+static double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+static int time_self_intersections(const char *path, int reps)
+{
+    Mesh m;
+    if (!CGAL::IO::read_polygon_mesh(std::string(path), m) || !CGAL::is_triangle_mesh(m)) {
+        std::printf("{\"file\":\"%s\",\"error\":\"not a triangle Surface_mesh\"}\n", path);
+        return 1;
+    }
+    std::vector<double> wall, cpu;
+    std::size_t count = 0;
+    for (int r = -1; r < reps; r++) {
+        std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
+        double w0 = now();
+        std::clock_t c0 = std::clock();
+        PMP::self_intersections(m, std::back_inserter(pairs));
+        if (r < 0) continue;
+        cpu.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
+        wall.push_back(now() - w0);
+        count = pairs.size();
+    }
+    std::printf("{\"file\":\"%s\",\"reps\":%d,\"si_wall_s\":%.6f,\"si_cpu_s\":%.6f,"
+                "\"self_intersections\":%zu}\n",
+                path, reps, median(wall), median(cpu), count);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: cgal_check [--timing] FILE...\n");
+        std::fprintf(stderr, "usage: cgal_check [--timing] FILE... | cgal_check --si REPS FILE\n");
         return 2;
     }
+    if (std::string(argv[1]) == "--si" && argc == 4)
+        return time_self_intersections(argv[3], std::atoi(argv[2]) > 0 ? std::atoi(argv[2]) : 1);
     bool timing = std::string(argv[1]) == "--timing";
     int failed = 0;
     for (int i = timing ? 2 : 1; i < argc; i++)

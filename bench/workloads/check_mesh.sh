@@ -13,7 +13,7 @@
 #     (`cgal_check --timing`): CGAL::IO::read_polygon_mesh into a Surface_mesh + is_closed +
 #     connected_components + Euler per component + is_degenerate_triangle_face + area +
 #     volume + self_intersections + JSON. A second row per mesh times the self-intersection
-#     search alone, in-process.
+#     search alone, in-process (bench/ours_check.c against `cgal_check --si`).
 set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -88,10 +88,22 @@ for name in ${CHECK_TIMED-refined_elephant bunny00 armadillo diplodocus}; do
   n_in=$(json_median "$out/j_nosi" seconds | ms)
   p_parts="read_polygon_mesh $(json_median "$out/j_cgal" read_s | ms), checks $(json_median "$out/j_cgal" check_s | ms), self_intersections $(json_median "$out/j_cgal" self_intersections_s | ms)"
   echo "ROW|check_$name|$o_wall|CGAL PMP|$p_wall|$cpu_ratio|whole process, median of $runs alternating runs: \`flintstone check --json\` (read + fl_mesh_check, every check) vs \`cgal_check --timing\` (read_polygon_mesh into a Surface_mesh, is_closed, connected_components, Euler, is_degenerate_triangle_face, area, volume, self_intersections) on $name.off ($tri triangles); in-process medians: ours $o_in ms ($n_in ms with --no-self-intersections), CGAL $p_parts ms"
-  # The self-intersection search alone, in-process wall time: ours as the difference between
-  # the runs with and without it (paired by run), CGAL's PMP::self_intersections call.
-  o_si=$(paste -d' ' <(json_values "$out/j_ours" seconds) <(json_values "$out/j_nosi" seconds) |
-    awk '{print $1 - $2}' | median)
-  p_si=$(json_median "$out/j_cgal" self_intersections_s)
-  echo "ROW|self_intersections_$name|$o_si|CGAL PMP::self_intersections|$p_si|-|in-process wall time, median of $runs: ours = (check) - (check --no-self-intersections) of paired runs, CGAL = the self_intersections call on the Surface_mesh; $name.off ($tri triangles), both exact, both found $(json_median "$out/j_ours" self_intersections) / $(json_median "$out/j_cgal" self_intersections) pairs"
+  # The search alone, in-process on a mesh read once (bench/ours_check.c, cgal_check --si):
+  # BENCH_ROUNDS processes a side, alternating, each the median of $runs runs; ours is
+  # fl_mesh_check with the search minus fl_mesh_check without it.
+  : >"$out/si_ours"
+  : >"$out/si_cgal"
+  for ((r = 0; r < BENCH_ROUNDS; r++)); do
+    line=$("$BENCH_BIN/ours_check" "$path" "$runs")
+    echo "$(field wall_full_s "$line") $(field wall_skip_s "$line") $(field cpu_full_s "$line") $(field cpu_skip_s "$line")" |
+      awk '{printf "%.6f %.6f\n", $1 - $2, $3 - $4}' >>"$out/si_ours"
+    "$peer" --si "$runs" "$path" | node -e '
+      const j = JSON.parse(require("fs").readFileSync(0, "utf8"));
+      console.log(j.si_wall_s, j.si_cpu_s);' >>"$out/si_cgal"
+  done
+  o_si=$(cut -d' ' -f1 "$out/si_ours" | median)
+  p_si=$(cut -d' ' -f1 "$out/si_cgal" | median)
+  si_cpu=$(awk -v o="$(cut -d' ' -f2 "$out/si_ours" | median)" -v p="$(cut -d' ' -f2 "$out/si_cgal" | median)" \
+    'BEGIN {printf "%.2f", (p > 0) ? o / p : 0}')
+  echo "ROW|self_intersections_$name|$o_si|CGAL PMP::self_intersections|$p_si|$si_cpu|the search alone on a mesh read once, in-process, median over $BENCH_ROUNDS processes of the median of $runs runs: ours = fl_mesh_check minus fl_mesh_check with skip_self_intersections (bench/ours_check.c), CGAL = PMP::self_intersections on the Surface_mesh (cgal_check --si); $name.off ($tri triangles); both exact, pairs found $(field pairs "$line") / $(json_median "$out/j_cgal" self_intersections)"
 done

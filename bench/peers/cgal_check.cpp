@@ -336,7 +336,12 @@ static int check_file(const char *path)
     std::vector<std::pair<std::size_t, std::size_t>> copies;
     std::vector<Point> opts;
     std::vector<Polygon> otris;
-    if (!as_given && !tris.empty()) {
+    // orient_polygon_soup does not terminate on some soups with a face that repeats an index
+    // (seen on random soups; CGAL expects PMP::repair_polygon_soup first), so such soups are
+    // not reoriented and get no CGAL mesh figures.
+    std::size_t repeated = 0;
+    for (const Polygon &t : tris) repeated += t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    if (!as_given && !tris.empty() && repeated == 0) {
         opts = pts;
         otris = tris;
         reoriented = PMP::orient_polygon_soup(
@@ -355,13 +360,15 @@ static int check_file(const char *path)
     json_bool("polygon_mesh_as_given", as_given);
     json_bool("reoriented_without_split", reoriented);
     json_bool("surface_mesh", mesh_ok && !tris.empty());
-    std::printf(",\"points_duplicated\":%zu,\"nonmanifold_vertices\":%zu",
-                opts.empty() ? 0 : opts.size() - pts.size(), nonmanifold_vertices);
+    std::printf(",\"repeated_index_faces\":%zu", repeated);
+    if (repeated == 0)
+        std::printf(",\"points_duplicated\":%zu,\"nonmanifold_vertices\":%zu",
+                    opts.empty() ? 0 : opts.size() - pts.size(), nonmanifold_vertices);
     if (!mesh_ok || tris.empty()) {
         // orient_polygon_soup cut the surface at its singular vertices (and edges). When the
         // result is a polygon mesh, its components are the original soup's faces joined
         // through edges, and its V - E + F exceeds the soup's by the points added.
-        if (!tris.empty() && PMP::is_polygon_soup_a_polygon_mesh(otris)) {
+        if (!otris.empty() && PMP::is_polygon_soup_a_polygon_mesh(otris)) {
             Mesh split;
             PMP::polygon_soup_to_polygon_mesh(opts, otris, split);
             auto comp = split.add_property_map<Mesh::Face_index, std::size_t>("f:cc", 0).first;

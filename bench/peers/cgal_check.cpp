@@ -97,7 +97,8 @@ static SoupFigures soup_figures(const std::vector<Point> &pts, const std::vector
         if (e.second == 1) s.boundary_edges++;
         if (e.second >= 3) s.nonmanifold_edges++;
     }
-    for (char u : used) s.unreferenced += !u;
+    for (char u : used)
+        s.unreferenced += !u;
     s.closed = !tris.empty() && s.boundary_edges == 0 && s.nonmanifold_edges == 0;
     for (const auto &e : edge_faces)
         if (e.second != 2) s.closed = false;
@@ -157,7 +158,8 @@ static std::size_t soup_self_intersections(const std::vector<Point> &p,
         boxes.push_back(Soup_box(p[f[0]].bbox() + p[f[1]].bbox() + p[f[2]].bbox(), t));
     }
     std::vector<const Soup_box *> ptrs;
-    for (const Soup_box &b : boxes) ptrs.push_back(&b);
+    for (const Soup_box &b : boxes)
+        ptrs.push_back(&b);
     std::size_t count = 0;
     CGAL::box_self_intersection_d<CGAL::Sequential_tag>(
         ptrs.begin(), ptrs.end(), [&](const Soup_box *x, const Soup_box *y) {
@@ -172,8 +174,8 @@ struct ComponentFigures {
     std::vector<char> open;
 };
 
-static ComponentFigures component_figures(const Mesh &m, Mesh::Property_map<Mesh::Face_index,
-                                                                             std::size_t> comp,
+static ComponentFigures component_figures(const Mesh &m,
+                                          Mesh::Property_map<Mesh::Face_index, std::size_t> comp,
                                           std::size_t n)
 {
     ComponentFigures c;
@@ -181,7 +183,8 @@ static ComponentFigures component_figures(const Mesh &m, Mesh::Property_map<Mesh
     c.e.assign(n, 0);
     c.f.assign(n, 0);
     c.open.assign(n, 0);
-    for (Mesh::Face_index f : m.faces()) c.f[comp[f]]++;
+    for (Mesh::Face_index f : m.faces())
+        c.f[comp[f]]++;
     for (Mesh::Edge_index e : m.edges()) {
         Mesh::Halfedge_index h = m.halfedge(e);
         bool border = m.is_border(h) || m.is_border(m.opposite(h));
@@ -217,20 +220,23 @@ struct Singularity_counter : public PMP::Default_orientation_visitor {
 
 static std::size_t find_root(std::vector<std::size_t> &parent, std::size_t i)
 {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    while (parent[i] != i)
+        i = parent[i] = parent[parent[i]];
     return i;
 }
 
 // Components of the cut mesh joined again through the points orient_polygon_soup copied:
 // components through shared vertices, as ours counts them. polygon_soup_to_polygon_mesh makes
 // vertex i of point i (checked; returns 0 if not).
-static std::size_t vertex_joined_components(
-    const Mesh &m, Mesh::Property_map<Mesh::Face_index, std::size_t> comp, std::size_t ncomp,
-    const std::vector<Point> &pts, const std::vector<std::pair<std::size_t, std::size_t>> &copies)
+static std::size_t
+vertex_joined_components(const Mesh &m, Mesh::Property_map<Mesh::Face_index, std::size_t> comp,
+                         std::size_t ncomp, const std::vector<Point> &pts,
+                         const std::vector<std::pair<std::size_t, std::size_t>> &copies)
 {
     if (m.number_of_vertices() != pts.size()) return 0;
     std::vector<std::size_t> parent(ncomp);
-    for (std::size_t i = 0; i < ncomp; i++) parent[i] = i;
+    for (std::size_t i = 0; i < ncomp; i++)
+        parent[i] = i;
     std::size_t joined = ncomp;
     for (const auto &cp : copies) {
         Mesh::Vertex_index a(static_cast<Mesh::size_type>(cp.first)),
@@ -239,7 +245,8 @@ static std::size_t vertex_joined_components(
         Mesh::Halfedge_index ha = m.halfedge(a), hb = m.halfedge(b);
         if (m.is_border(ha)) ha = m.opposite(m.next(ha));
         if (m.is_border(hb)) hb = m.opposite(m.next(hb));
-        std::size_t ra = find_root(parent, comp[m.face(ha)]), rb = find_root(parent, comp[m.face(hb)]);
+        std::size_t ra = find_root(parent, comp[m.face(ha)]),
+                    rb = find_root(parent, comp[m.face(hb)]);
         if (ra != rb) {
             parent[ra] = rb;
             joined--;
@@ -265,9 +272,11 @@ static void mesh_checks(Mesh &m, double t_read, double t_soup, double t_mesh)
     // Summed over the components, so that isolated vertices (polygon_soup_to_polygon_mesh
     // makes a vertex of every point, used or not) do not count: ours counts referenced ones.
     long long euler = 0;
-    for (std::size_t i = 0; i < ncomp; i++) euler += c.v[i] - c.e[i] + c.f[i];
+    for (std::size_t i = 0; i < ncomp; i++)
+        euler += c.v[i] - c.e[i] + c.f[i];
     std::size_t degenerate = 0;
-    for (Mesh::Face_index f : m.faces()) degenerate += PMP::is_degenerate_triangle_face(f, m);
+    for (Mesh::Face_index f : m.faces())
+        degenerate += PMP::is_degenerate_triangle_face(f, m);
     double area = PMP::area(m);
     double volume = closed ? PMP::volume(m) : NAN;
     double t_check = now() - t0;
@@ -276,7 +285,8 @@ static void mesh_checks(Mesh &m, double t_read, double t_soup, double t_mesh)
     std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
     PMP::self_intersections(m, std::back_inserter(pairs));
     std::size_t si = 0, si_degenerate = 0;
-    for (const auto &p : pairs) (p.first == p.second ? si_degenerate : si)++;
+    for (const auto &p : pairs)
+        (p.first == p.second ? si_degenerate : si)++;
     double t_si = now() - t0;
 
     json_bool("mesh_closed", closed);
@@ -320,7 +330,8 @@ static int check_file(const char *path)
     std::size_t non_triangles = 0;
     for (const Polygon &p : polys) {
         if (p.size() != 3) non_triangles++;
-        for (std::size_t k = 2; k < p.size(); k++) tris.push_back(Polygon{p[0], p[k - 1], p[k]});
+        for (std::size_t k = 2; k < p.size(); k++)
+            tris.push_back(Polygon{p[0], p[k - 1], p[k]});
     }
     double t_read = now() - t0;
 
@@ -340,7 +351,8 @@ static int check_file(const char *path)
     // (seen on random soups; CGAL expects PMP::repair_polygon_soup first), so such soups are
     // not reoriented and get no CGAL mesh figures.
     std::size_t repeated = 0;
-    for (const Polygon &t : tris) repeated += t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    for (const Polygon &t : tris)
+        repeated += t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
     if (!as_given && !tris.empty() && repeated == 0) {
         opts = pts;
         otris = tris;
@@ -375,7 +387,8 @@ static int check_file(const char *path)
             std::size_t ncomp = PMP::connected_components(split, comp);
             ComponentFigures c = component_figures(split, comp, ncomp);
             long long euler = 0;
-            for (std::size_t i = 0; i < ncomp; i++) euler += c.v[i] - c.e[i] + c.f[i];
+            for (std::size_t i = 0; i < ncomp; i++)
+                euler += c.v[i] - c.e[i] + c.f[i];
             std::printf(",\"split_components\":%zu,\"split_euler\":%lld,"
                         "\"split_components_joined\":%zu",
                         ncomp, euler, vertex_joined_components(split, comp, ncomp, opts, copies));

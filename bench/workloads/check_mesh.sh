@@ -6,7 +6,8 @@
 #     and `cgal_check FILE`; bench/mesh_check_compare.js compares the answers and writes
 #     bench/out/check_validation.md (the table in docs/mesh.md, "Validation on real meshes")
 #     plus the summary on stderr. Raw answers: bench/out/check/{ours,cgal}.jsonl.
-#  2. timing: on the largest meshes, whole processes alternately, CHECK_RUNS (default 7) each,
+#  2. timing: on the largest meshes (CHECK_TIMED, default "refined_elephant bunny00 armadillo
+#     diplodocus"; empty to skip), whole processes alternately, CHECK_RUNS (default 7) each,
 #     wall and CPU (user + sys) time from bash's `time`; ROW lines with the medians.
 #     Ours: read + every check of fl_mesh_check (topology, components, genus, degenerate and
 #     duplicate vertices, exact self-intersections, bbox, area, volume) + JSON. CGAL

@@ -80,6 +80,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
   echo "- compiler: $(cc --version | head -1); flintstone built CMAKE_BUILD_TYPE=Release"
   echo "- peer: assimp $(dpkg-query -W -f='${Version}' libassimp-dev) (Debian libassimp-dev)"
   echo "- peers (Delaunay): CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) (libcgal-dev, g++ -O2 -DNDEBUG), qhull $(dpkg-query -W -f='${Version}' qhull-bin) (qhull-bin), TetGen $(dpkg-query -W -f='${Version}' tetgen) (tetgen)"
+  echo "- peer (check): CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) (Debian libcgal-dev)"
   echo
   echo "| workload | ours (s) | peer | peer (s) | ratio ours/peer (wall) | ratio (CPU) | notes |"
   echo "|---|---:|---|---:|---:|---:|---|"

@@ -143,6 +143,11 @@ int fl_incircle_weighted(const double *a, const double *b, const double *c, cons
 int fl_insphere_weighted(const double *a, const double *b, const double *c, const double *d,
                          const double *e);
 
+/* The diametral-ball test in dim 2 or 3: +1 if p lies outside the closed ball with diameter ab,
+ * 0 on its sphere, -1 strictly inside; exactly the sign of (p - a).(p - b). (The Gabriel test,
+ * and the two-point case of a smallest enclosing disc.) Returns 0 for other dims. */
+int fl_diametral(const double *a, const double *b, const double *p, int dim);
+
 /* Symbolically perturbed predicates (Simulation of Simplicity). Each point carries a global
  * index (its position in the caller's input); the indices of one call must be pairwise
  * distinct. The perturbation depends only on (coordinates, index), so all answers of one

@@ -101,8 +101,7 @@ int gamma_exact_sum_sign(int terms, const double *coef, const double *const *x,
 
 int gamma_diametral_sign(const double *a, const double *b, const double *p, int dim)
 {
-    const double one = 1, *x[1] = {p}, *y[1] = {a}, *u[1] = {p}, *w[1] = {b};
-    return gamma_exact_sum_sign(1, &one, x, y, u, w, dim);
+    return fl_diametral(a, b, p, dim);
 }
 
 int gamma_compare_dist(const double *a, const double *b, const double *c, const double *d, int dim)

@@ -38,9 +38,6 @@ static inline int fl_hal2_outside_disc(const double *disc, double x, double y)
 void fl_hal2_sbd(const double *xy, uint32_t *idx, size_t n, uint32_t *i, uint32_t *j,
                  double disc[3]);
 
-/* Exact sign of (p - a) . (p - b): < 0 when p is strictly inside the circle with diameter ab. */
-int fl_hal2_diametral_sign(const double *a, const double *b, const double *p);
-
 /* A polyline waiting for its node: ring-local positions p < s (s may pass the ring's end),
  * its level, and where the new node's index goes. */
 typedef struct hal2_pending {

@@ -1,81 +1,11 @@
 /* Smallest enclosing disc of a ring's vertices (thesis §7.2.2: the root of a flintstone tree)
  * by Welzl's randomized incremental algorithm, expected O(n) time. The decisions "is p outside
- * the current circle" are exact: fl_incircle for a circle through three points and an exact
- * dot-product sign for a circle with diameter ab. */
+ * the current circle" are exact: fl_incircle for a circle through three points and
+ * fl_diametral for a circle with diameter ab. */
 #include <math.h>
 
 #include "core/core.h"
 #include "hal/hal2_internal.h"
-
-/* ---- exact sign of (p - a) . (p - b) ----
- * Each difference is split exactly into two doubles (Knuth's TwoSum), each product of parts
- * into two (Dekker's TwoProduct; the build forbids FMA contraction so the split is exact), and
- * the 16 terms are summed into a nonoverlapping expansion whose largest component carries the
- * sign (Shewchuk). Exact while |coordinates| < 2^500 (no overflow or underflow of products);
- * beyond that the floating filter's answer is used. */
-
-static void two_sum(double a, double b, double *s, double *e)
-{
-    *s = a + b;
-    double bv = *s - a, av = *s - bv;
-    *e = (a - av) + (b - bv);
-}
-
-static void split(double a, double *hi, double *lo)
-{
-    double c = 134217729.0 * a; /* 2^27 + 1 */
-    *hi = c - (c - a);
-    *lo = a - *hi;
-}
-
-static void two_product(double a, double b, double *p, double *e)
-{
-    double ah, al, bh, bl;
-    *p = a * b;
-    split(a, &ah, &al);
-    split(b, &bh, &bl);
-    *e = al * bl - (((*p - ah * bh) - al * bh) - ah * bl);
-}
-
-/* Adds b to the expansion e[0..*n-1] (increasing magnitude), dropping zero components. */
-static void grow_expansion(double *e, int *n, double b)
-{
-    int m = 0;
-    double q = b;
-    for (int i = 0; i < *n; i++) {
-        double s, t;
-        two_sum(q, e[i], &s, &t);
-        if (t != 0) e[m++] = t;
-        q = s;
-    }
-    if (q != 0) e[m++] = q;
-    *n = m;
-}
-
-int fl_hal2_diametral_sign(const double *a, const double *b, const double *p)
-{
-    double u0 = p[0] - a[0], v0 = p[0] - b[0], u1 = p[1] - a[1], v1 = p[1] - b[1];
-    double d = u0 * v0 + u1 * v1;
-    /* Each difference and product is within 1 ulp, the sum within another: 4 ulps of the sum
-     * of magnitudes bound the error; 1e-15 > 4 * 2^-53 leaves room. */
-    double bound = (fabs(u0 * v0) + fabs(u1 * v1)) * 1e-15;
-    if (d > bound || d < -bound || !(fabs(d) < 0x1p500)) return (d > 0) - (d < 0);
-    double e[40];
-    int n = 0;
-    for (int k = 0; k < 2; k++) {
-        double u[2], v[2];
-        two_sum(p[k], -a[k], &u[0], &u[1]);
-        two_sum(p[k], -b[k], &v[0], &v[1]);
-        for (int i = 0; i < 2; i++)
-            for (int j = 0; j < 2; j++) {
-                double hi, lo;
-                two_product(u[i], v[j], &hi, &lo);
-                grow_expansion(e, &n, lo);
-                grow_expansion(e, &n, hi);
-            }
-    }
-    return n == 0 ? 0 : (e[n - 1] > 0) - (e[n - 1] < 0);
-}
 
 /* ---- Welzl's algorithm (move-to-front free, three nested loops) ---- */
 
@@ -88,7 +18,7 @@ typedef struct circle {
 static int circle_excludes(const circle *c, const double *p)
 {
     if (c->n == 1) return p[0] != c->s[0][0] || p[1] != c->s[0][1];
-    if (c->n == 2) return fl_hal2_diametral_sign(c->s[0], c->s[1], p) > 0;
+    if (c->n == 2) return fl_diametral(c->s[0], c->s[1], p, 2) > 0;
     int o = fl_orient2d(c->s[0], c->s[1], c->s[2]);
     return fl_incircle(c->s[0], c->s[1], c->s[2], p) * o < 0;
 }
@@ -100,8 +30,8 @@ static circle circle3(const double *a, const double *b, const double *c)
 {
     circle r = {{a, b, c}, 3};
     if (fl_orient2d(a, b, c) != 0) return r;
-    if (fl_hal2_diametral_sign(a, b, c) <= 0) return (circle){{a, b, NULL}, 2};
-    if (fl_hal2_diametral_sign(a, c, b) <= 0) return (circle){{a, c, NULL}, 2};
+    if (fl_diametral(a, b, c, 2) <= 0) return (circle){{a, b, NULL}, 2};
+    if (fl_diametral(a, c, b, 2) <= 0) return (circle){{a, c, NULL}, 2};
     return (circle){{b, c, NULL}, 2};
 }
 
@@ -138,7 +68,7 @@ static circle welzl(const double *xy, const uint32_t *idx, size_t n)
 /* 1 when p is exactly on the circle c. */
 static int circle_on(const circle *c, const double *p)
 {
-    if (c->n == 2) return fl_hal2_diametral_sign(c->s[0], c->s[1], p) == 0;
+    if (c->n == 2) return fl_diametral(c->s[0], c->s[1], p, 2) == 0;
     return fl_incircle(c->s[0], c->s[1], c->s[2], p) == 0;
 }
 

@@ -22,7 +22,7 @@ int gamma_in_circle(const double *a, const double *b, const double *w, const dou
 int gamma_in_sphere(const double *a, const double *b, const double *c, const double *w,
                     const double *e);
 
-/* Exact sign of sum_k coef[k] * (x[k]-y[k]).(u[k]-w[k]) over dim coordinates (terms <= 2). */
+/* Exact sign of sum_k coef[k] * (x[k]-y[k]).(u[k]-w[k]) over dim coordinates (fl_dot_sum_sign). */
 int gamma_exact_sum_sign(int terms, const double *coef, const double *const *x,
                          const double *const *y, const double *const *u, const double *const *w,
                          int dim);

@@ -1,43 +1,64 @@
-/* The diametral-ball test: the sign of (p - a).(p - b), negative exactly when p lies inside
- * the ball with diameter ab (Thales). Gabriel edges, the two-point case of the smallest
- * enclosing disc and distance-ordered graphs decide with it. */
+/* Exact signs of sums of products of coordinate differences (dot_sum.h), and the
+ * diametral-ball test built on them: the sign of (p - a).(p - b), negative exactly when p lies
+ * inside the ball with diameter ab (Thales). */
 #include <math.h>
 
 #include "flintstone.h"
+#include "predicates/dot_sum.h"
 #include "predicates/predicates_internal.h"
 
 enum {
-    COORD_LIMBS = 68,             /* a double scaled to an integer: see exact.c */
-    DIFF_LIMBS = COORD_LIMBS + 1, /* one carry more */
-    PROD_LIMBS = 2 * DIFF_LIMBS,  /* a product of two differences */
-    SUM_LIMBS = PROD_LIMBS + 2    /* three products summed */
+    COORD_LIMBS = 68,                      /* a double scaled to an integer: see exact.c */
+    DIFF_LIMBS = COORD_LIMBS + 1,          /* one carry more */
+    PROD_LIMBS = 2 * DIFF_LIMBS,           /* a product of two differences */
+    TERM_LIMBS = PROD_LIMBS + COORD_LIMBS, /* times a scaled coefficient */
+    SUM_LIMBS = TERM_LIMBS + 4             /* up to 12 such terms summed */
 };
 
-/* All coordinates are multiples of 2^emin; scaled by 2^-emin they are integers, and the sum of
- * products of integer differences is exact, with the sign of the unscaled value. */
-static int exact_sign(const double *a, const double *b, const double *p, int dim)
+/* Lowers *emin to the exponent of the lowest set bit among v[0..count-1] (zeros have none);
+ * *any records whether some value was nonzero. */
+static void low_exponent(const double *v, int count, int *emin, int *any)
 {
-    int emin = 0, any = 0;
-    const double *pts[3] = {a, b, p};
-    for (int i = 0; i < 3; i++)
-        for (int k = 0; k < dim; k++)
-            if (pts[i][k] != 0) {
-                int e = fl_big_low_exponent(pts[i][k]);
-                if (!any || e < emin) emin = e;
-                any = 1;
-            }
-    uint32_t xa[COORD_LIMBS], xb[COORD_LIMBS], xp[COORD_LIMBS], du[DIFF_LIMBS], dv[DIFF_LIMBS];
-    uint32_t pr[PROD_LIMBS], sum[SUM_LIMBS];
-    fl_big A = {xa, 0, 0}, B = {xb, 0, 0}, P = {xp, 0, 0}, U = {du, 0, 0}, V = {dv, 0, 0};
-    fl_big R = {pr, 0, 0}, S = {sum, 0, 0};
-    for (int k = 0; k < dim; k++) {
-        fl_big_set_double(&A, a[k], emin);
-        fl_big_set_double(&B, b[k], emin);
-        fl_big_set_double(&P, p[k], emin);
-        fl_big_sub(&U, &P, &A);
-        fl_big_sub(&V, &P, &B);
-        fl_big_mul(&R, &U, &V);
-        fl_big_add(&S, &S, &R);
+    for (int i = 0; i < count; i++)
+        if (v[i] != 0) {
+            int e = fl_big_low_exponent(v[i]);
+            if (!*any || e < *emin) *emin = e;
+            *any = 1;
+        }
+}
+
+/* Points are scaled by 2^-ep and coefficients by 2^-ec into integers; every term then carries
+ * the same factor 2^(2 ep + ec) > 0, so the integer sum has the sign of the true sum. */
+int fl_dot_sum_sign(int terms, const double *coef, const double *const *x, const double *const *y,
+                    const double *const *u, const double *const *w, int dim)
+{
+    if (terms < 1 || terms > FL_DOT_SUM_MAX_TERMS || (dim != 2 && dim != 3)) return 0;
+    int ep = 0, ec = 0, any_point = 0, any_coef = 0;
+    for (int k = 0; k < terms; k++) {
+        low_exponent(x[k], dim, &ep, &any_point);
+        low_exponent(y[k], dim, &ep, &any_point);
+        low_exponent(u[k], dim, &ep, &any_point);
+        low_exponent(w[k], dim, &ep, &any_point);
+    }
+    low_exponent(coef, terms, &ec, &any_coef);
+    if (!any_point || !any_coef) return 0;
+    uint32_t l1[COORD_LIMBS], l2[COORD_LIMBS], ld1[DIFF_LIMBS], ld2[DIFF_LIMBS], lc[COORD_LIMBS];
+    uint32_t lp[PROD_LIMBS], lt[TERM_LIMBS], ls[SUM_LIMBS];
+    fl_big A = {l1, 0, 0}, B = {l2, 0, 0}, D1 = {ld1, 0, 0}, D2 = {ld2, 0, 0}, C = {lc, 0, 0};
+    fl_big P = {lp, 0, 0}, T = {lt, 0, 0}, S = {ls, 0, 0};
+    for (int k = 0; k < terms; k++) {
+        fl_big_set_double(&C, coef[k], ec);
+        for (int i = 0; i < dim; i++) {
+            fl_big_set_double(&A, x[k][i], ep);
+            fl_big_set_double(&B, y[k][i], ep);
+            fl_big_sub(&D1, &A, &B);
+            fl_big_set_double(&A, u[k][i], ep);
+            fl_big_set_double(&B, w[k][i], ep);
+            fl_big_sub(&D2, &A, &B);
+            fl_big_mul(&P, &D1, &D2);
+            fl_big_mul(&T, &P, &C);
+            fl_big_add(&S, &S, &T);
+        }
     }
     return fl_big_sign(&S);
 }
@@ -63,5 +84,6 @@ int fl_diametral(const double *a, const double *b, const double *p, int dim)
         if (d > bound) return 1;
         if (d < -bound) return -1;
     }
-    return exact_sign(a, b, p, dim);
+    const double one = 1, *x[1] = {p}, *y[1] = {a}, *w[1] = {b};
+    return fl_dot_sum_sign(1, &one, x, y, x, w, dim);
 }

@@ -29,10 +29,36 @@ static void low_exponent(const double *v, int count, int *emin, int *any)
 
 /* Points are scaled by 2^-ep and coefficients by 2^-ec into integers; every term then carries
  * the same factor 2^(2 ep + ec) > 0, so the integer sum has the sign of the true sum. */
+/* The floating filter: each term coef (x-y)(u-w) is off by at most four roundings (two
+ * differences, two products), and summing at most 12 terms adds 11 more, so 16u times the sum
+ * of the terms' magnitudes bounds the error (u = 2^-53, second-order terms absorbed by the
+ * slack). Valid while no factor is beyond 2^300 or below 2^-300 in magnitude (no overflow, no
+ * subnormal product); otherwise, or when undecided, it returns 2. */
+static int filtered_sign(int terms, const double *coef, const double *const *x,
+                         const double *const *y, const double *const *u, const double *const *w,
+                         int dim)
+{
+    double sum = 0, mag = 0;
+    for (int k = 0; k < terms; k++)
+        for (int i = 0; i < dim; i++) {
+            double d1 = x[k][i] - y[k][i], d2 = u[k][i] - w[k][i];
+            double f[3] = {fabs(d1), fabs(d2), fabs(coef[k])};
+            for (int j = 0; j < 3; j++)
+                if (f[j] != 0 && (f[j] > 0x1p300 || f[j] < 0x1p-300)) return 2;
+            double t = coef[k] * (d1 * d2);
+            sum += t;
+            mag += fabs(t);
+        }
+    double bound = 16.0 * 0x1p-53 * mag;
+    return sum > bound ? 1 : sum < -bound ? -1 : 2;
+}
+
 int fl_dot_sum_sign(int terms, const double *coef, const double *const *x, const double *const *y,
                     const double *const *u, const double *const *w, int dim)
 {
     if (terms < 1 || terms > FL_DOT_SUM_MAX_TERMS || (dim != 2 && dim != 3)) return 0;
+    int fast = filtered_sign(terms, coef, x, y, u, w, dim);
+    if (fast != 2) return fast;
     int ep = 0, ec = 0, any_point = 0, any_coef = 0;
     for (int k = 0; k < terms; k++) {
         low_exponent(x[k], dim, &ep, &any_point);

@@ -363,6 +363,7 @@ static long long load_integer(const unsigned char *p, ply_type t, int big)
     return (long long)load_value(p, t, big);
 }
 
+/* Where a body reader is: the element, the item, and (binary only) the byte offset. */
 typedef struct ply_cursor {
     size_t pos;
     const ply_element *el;
@@ -549,7 +550,7 @@ static fl_status ascii_item(ply_reader *r, const ply_cursor *c)
 
 static fl_status ply_ascii_body(ply_reader *r)
 {
-    ply_cursor c = {.pos = r->body};
+    ply_cursor c = {0}; /* ascii positions are tracked by r->s */
     const ply_element *els = r->elements.data;
     for (size_t i = 0; i < r->elements.count; i++) {
         c.el = &els[i];

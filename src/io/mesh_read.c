@@ -167,32 +167,6 @@ void fl_mesh_build_reserve(fl_mesh_build *b, size_t vertices, size_t triangles)
     if (triangles <= SIZE_MAX / 3) (void)fl_vec_reserve(&b->tri, triangles * 3);
 }
 
-fl_status fl_mesh_build_vertex(fl_mesh_build *b, double x, double y, double z)
-{
-    if (b->xyz.count / 3 >= UINT32_MAX) return FL_ERR_INPUT;
-    if (b->xyz.count + 3 > b->xyz.capacity && fl_vec_reserve(&b->xyz, b->xyz.count + 3))
-        return FL_ERR_NOMEM;
-    double *d = (double *)b->xyz.data + b->xyz.count;
-    d[0] = x;
-    d[1] = y;
-    d[2] = z;
-    b->xyz.count += 3;
-    return FL_OK;
-}
-
-fl_status fl_mesh_build_triangle(fl_mesh_build *b, uint32_t a, uint32_t c, uint32_t d)
-{
-    if (b->tri.count / 3 >= UINT32_MAX) return FL_ERR_INPUT;
-    if (b->tri.count + 3 > b->tri.capacity && fl_vec_reserve(&b->tri, b->tri.count + 3))
-        return FL_ERR_NOMEM;
-    uint32_t *t = (uint32_t *)b->tri.data + b->tri.count;
-    t[0] = a;
-    t[1] = c;
-    t[2] = d;
-    b->tri.count += 3;
-    return FL_OK;
-}
-
 const char *fl_mesh_build_why(fl_status status)
 {
     return status == FL_ERR_NOMEM ? "out of memory"

@@ -299,41 +299,56 @@ static fl_status ply_check_counts(ply_reader *r)
 
 /* ---- binary body ---- */
 
-static uint64_t load_bits(const unsigned char *p, size_t size, int big)
+/* Loads of a fixed width in either byte order. Fixed widths let the compiler turn each into
+ * one load (and a byte swap for the foreign order) instead of a loop. */
+static uint64_t load_bits(const unsigned char *p, int bytes, int big)
 {
     uint64_t u = 0;
     if (big)
-        for (size_t i = 0; i < size; i++)
+        for (int i = 0; i < bytes; i++)
             u = u << 8 | p[i];
     else
-        for (size_t i = size; i-- > 0;)
+        for (int i = bytes - 1; i >= 0; i--)
             u = u << 8 | p[i];
     return u;
 }
 
+static uint16_t load16(const unsigned char *p, int big)
+{
+    return (uint16_t)load_bits(p, 2, big);
+}
+static uint32_t load32(const unsigned char *p, int big)
+{
+    return (uint32_t)load_bits(p, 4, big);
+}
+static uint64_t load64(const unsigned char *p, int big)
+{
+    return load_bits(p, 8, big);
+}
+
 static double load_value(const unsigned char *p, ply_type t, int big)
 {
-    uint64_t u = load_bits(p, ply_types[t].size, big);
     switch (t) {
     case PLY_INT8:
-        return (int8_t)(uint8_t)u;
+        return (int8_t)p[0];
     case PLY_UINT8:
-        return (uint8_t)u;
+        return p[0];
     case PLY_INT16:
-        return (int16_t)(uint16_t)u;
+        return (int16_t)load16(p, big);
     case PLY_UINT16:
-        return (uint16_t)u;
+        return load16(p, big);
     case PLY_INT32:
-        return (int32_t)(uint32_t)u;
+        return (int32_t)load32(p, big);
     case PLY_UINT32:
-        return (uint32_t)u;
+        return load32(p, big);
     case PLY_FLOAT32: {
-        uint32_t w = (uint32_t)u;
+        uint32_t w = load32(p, big);
         float f;
         memcpy(&f, &w, sizeof f);
         return f;
     }
     case PLY_FLOAT64: {
+        uint64_t u = load64(p, big);
         double d;
         memcpy(&d, &u, sizeof d);
         return d;
@@ -348,6 +363,7 @@ static long long load_integer(const unsigned char *p, ply_type t, int big)
     return (long long)load_value(p, t, big);
 }
 
+/* Where a body reader is: the element, the item, and (binary only) the byte offset. */
 typedef struct ply_cursor {
     size_t pos;
     const ply_element *el;
@@ -534,7 +550,7 @@ static fl_status ascii_item(ply_reader *r, const ply_cursor *c)
 
 static fl_status ply_ascii_body(ply_reader *r)
 {
-    ply_cursor c = {.pos = r->body};
+    ply_cursor c = {0}; /* ascii positions are tracked by r->s */
     const ply_element *els = r->elements.data;
     for (size_t i = 0; i < r->elements.count; i++) {
         c.el = &els[i];

@@ -49,6 +49,22 @@ static void test_mesh_round_trips_through_every_format_and_case_of_extension(voi
     rmdir("io_mesh_rt.d");
 }
 
+static void test_mesh_empty_mesh_round_trips_in_every_format(void)
+{
+    static const char *paths[] = {"io_mesh_empty.off", "io_mesh_empty.obj", "io_mesh_empty.ply",
+                                  "io_mesh_empty.stl"};
+    fl_mesh empty = {0, NULL, 0, NULL};
+    for (size_t i = 0; i < sizeof paths / sizeof paths[0]; i++) {
+        fl_error err;
+        fl_mesh back;
+        CHECK_STATUS(fl_write_mesh(paths[i], &empty, &err), FL_OK, &err);
+        CHECK_STATUS(fl_read_mesh(paths[i], &back, &err), FL_OK, &err);
+        CHECK_MSG(back.vertex_count == 0 && back.triangle_count == 0, "%s", paths[i]);
+        fl_mesh_free(&back);
+        remove(paths[i]);
+    }
+}
+
 static void test_mesh_unknown_extension_is_a_usage_error_listing_the_formats(void)
 {
     fl_mesh m = cube(), out;
@@ -236,6 +252,7 @@ static void test_mesh_readers_survive_random_corruption(void)
 }
 
 FL_TEST_MAIN(FL_TEST_CASE(test_mesh_round_trips_through_every_format_and_case_of_extension),
+             FL_TEST_CASE(test_mesh_empty_mesh_round_trips_in_every_format),
              FL_TEST_CASE(test_mesh_unknown_extension_is_a_usage_error_listing_the_formats),
              FL_TEST_CASE(test_mesh_read_of_a_missing_file_is_an_io_error),
              FL_TEST_CASE(test_mesh_failed_parse_zeroes_the_output),

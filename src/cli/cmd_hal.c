@@ -178,13 +178,16 @@ int cmd_inside(int argc, char **argv)
     }
     fl_hal2 hal;
     int code = load_hal(pos[0], &hal);
-    uint8_t *where = code ? NULL : fl_alloc_array(q.count, 1);
-    fl_status st = FL_OK;
-    if (!code && !where) st = fl_fail(&err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-    if (!code && st == FL_OK) st = fl_hal2_contains(&hal, q.coords, q.count, where, &err);
+    if (code) {
+        fl_points_free(&q);
+        return code;
+    }
+    uint8_t *where = fl_alloc_array(q.count, 1);
+    fl_status st = where ? fl_hal2_contains(&hal, q.coords, q.count, where, &err)
+                         : fl_fail(&err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     double seconds = cli_now() - t0;
-    if (!code && st == FL_OK && c.output) st = write_where_csv(c.output, &q, where, &err);
-    if (!code && st == FL_OK) {
+    if (st == FL_OK && c.output) st = write_where_csv(c.output, &q, where, &err);
+    if (st == FL_OK) {
         size_t count[3] = {0, 0, 0};
         for (size_t i = 0; i < q.count; i++)
             count[where[i]]++;
@@ -203,7 +206,7 @@ int cmd_inside(int argc, char **argv)
         }
     }
     if (st) code = cli_report(&err);
-    if (where) fl_hal2_free(&hal);
+    fl_hal2_free(&hal);
     free(where);
     fl_points_free(&q);
     return code;

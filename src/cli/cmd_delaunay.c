@@ -83,7 +83,7 @@ static fl_status write_dt2_svg(const char *path, const fl_points *p, const fl_dt
 
 /* Writes a 2D triangulation: .svg as a picture of its edges, any mesh format as a flat mesh
  * (z = 0). */
-static fl_status write_dt2(const char *path, const fl_points *p, const fl_dt2 *dt, fl_error *err)
+fl_status cli_write_dt2(const char *path, const fl_points *p, const fl_dt2 *dt, fl_error *err)
 {
     char ext[16];
     fl_path_extension(path, ext, sizeof ext);
@@ -121,7 +121,7 @@ static int run_2d(const cli_common *c, const fl_points *p, int verify, cli_progr
         s->valid = fl_dt2_verify(p->coords, &dt, &err) == FL_OK;
         if (!s->valid) cli_report(&err);
     }
-    if (c->output && (st = write_dt2(c->output, p, &dt, &err))) {
+    if (c->output && (st = cli_write_dt2(c->output, p, &dt, &err))) {
         fl_dt2_free(&dt);
         return cli_report(&err);
     }

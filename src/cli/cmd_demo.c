@@ -97,21 +97,7 @@ static int step_delaunay2(demo *d)
     if (fl_read_points(in, &p, &err)) return step_failed(d, "delaunay 2d", &err);
     fl_status st = fl_dt2_build(p.coords, p.count, NULL, &dt, &err);
     int valid = st == FL_OK && fl_dt2_verify(p.coords, &dt, &err) == FL_OK;
-    if (valid) {
-        fl_mesh m = {p.count, fl_alloc_array(3 * p.count, sizeof(double)), dt.triangle_count,
-                     dt.tri};
-        if (!m.xyz) {
-            st = fl_fail(&err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-        } else {
-            for (size_t i = 0; i < p.count; i++) {
-                m.xyz[3 * i] = p.coords[2 * i];
-                m.xyz[3 * i + 1] = p.coords[2 * i + 1];
-                m.xyz[3 * i + 2] = 0;
-            }
-            st = fl_write_mesh(out, &m, &err);
-            free(m.xyz);
-        }
-    }
+    if (valid) st = cli_write_dt2(out, &p, &dt, &err);
     double seconds = cli_now() - t0;
     fl_points_free(&p);
     if (st || !valid) {

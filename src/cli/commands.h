@@ -13,4 +13,10 @@ int cmd_inside(int argc, char **argv);
 int cmd_intersect(int argc, char **argv);
 int cmd_closest(int argc, char **argv);
 
+#include "flintstone.h"
+
+/* Writes a 2D Delaunay triangulation of the points p: .svg as a picture of its edges, any mesh
+ * format as a flat mesh (z = 0). Shared by `delaunay -o` and the demo. */
+fl_status cli_write_dt2(const char *path, const fl_points *p, const fl_dt2 *dt, fl_error *err);
+
 #endif

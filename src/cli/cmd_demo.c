@@ -1,7 +1,7 @@
-/* flintstone demo: the main job on the bundled default inputs (data/demo, our own synthetic
- * shapes). Each step runs a capability through the library, writes its output into the demo
- * directory and adds its key numbers to summary.json. The pipeline grows as capabilities land
- * (reconstruction, flintstones, Meshsweeper, G1 surfaces, skins). */
+/* flintstone demo and flintstone report: the whole pipeline (src/cli/pipeline*.c) on the
+ * bundled default inputs (data/demo, our own synthetic shapes with their ground truth) or on
+ * the user's own points or mesh. Both write report.html (one static page: pictures, numbers,
+ * reproducing commands) and summary.json into the output directory, each atomically. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <stdlib.h>
@@ -10,237 +10,48 @@
 
 #include "cli/cli.h"
 #include "cli/commands.h"
+#include "cli/pipeline.h"
 #include "core/core.h"
 
 #ifndef FL_DATA_DIR
 #define FL_DATA_DIR "data/demo"
 #endif
 
-static const char *usage_text =
+static const char *demo_usage =
     "usage: flintstone demo [--data DIR] [--out DIR] [--json] [--quiet]\n"
     "\n"
-    "Runs the pipeline on the bundled inputs (a torus mesh, 160 points on a closed 2D curve,\n"
-    "1500 points on a closed surface): mesh check, 2D and 3D Delaunay triangulations verified\n"
-    "with exact predicates, the 2D and 3D boundaries by constriction. Writes the outputs and\n"
-    "summary.json into the output directory.\n"
+    "Runs the whole pipeline on the bundled inputs and writes report.html, summary.json and\n"
+    "every output into the output directory:\n"
+    "  leaf    160 points on a closed 2D curve -> Delaunay -> boundary polygon -> flintstone\n"
+    "          approximations -> point inclusion -> distance to the true curve\n"
+    "  peanut  1500 points on a closed surface -> closed genus-0 surface -> check -> distance\n"
+    "          to the true surface\n"
+    "  torus   a closed genus-1 mesh -> check\n"
     "\n"
     "  --data DIR  where the bundled inputs are (default: the source tree's data/demo, then\n"
     "              ./data/demo)\n"
     "  --out DIR   output directory (default: demo-out)\n"
     "\n"
-    "example: flintstone demo --out /tmp/demo\n";
+    "example: flintstone demo --out /tmp/demo && xdg-open /tmp/demo/report.html\n";
 
-typedef struct demo {
-    const char *data_dir, *out_dir;
-    cli_json json; /* summary.json, written into a temporary and renamed at the end */
-    fl_out_file summary;
-    int failed;
-    int quiet;
-} demo;
+static const char *report_usage =
+    "usage: flintstone report INPUT [--truth REFERENCE] [--out DIR] [--json] [--quiet]\n"
+    "\n"
+    "Runs the pipeline of `flintstone demo` on your own data and writes report.html and\n"
+    "summary.json into the output directory. INPUT is 2D points (.xy, ...), 3D points (.xyz,\n"
+    "...) or a mesh (.off .obj .ply .stl; reconstruction is then skipped). --truth gives the\n"
+    "curve (ordered closed polyline, 2D) or surface (mesh, 3D) the points came from, for the\n"
+    "distance check.\n"
+    "\n"
+    "  --out DIR   output directory (default: report-out)\n"
+    "\n"
+    "example: flintstone report scan.xyz --out scan-report\n";
 
-static void path_in(char *buf, size_t size, const char *dir, const char *name)
-{
-    snprintf(buf, size, "%s/%s", dir, name);
-}
+typedef struct run {
+    const char *data_dir, *out_dir, *input, *truth;
+    int report; /* 1: `report INPUT`, 0: `demo` */
+} run;
 
-static int step_failed(demo *d, const char *step, const fl_error *err)
-{
-    char buf[1200];
-    fl_error_format(err, buf, sizeof buf);
-    fprintf(stderr, "flintstone: error: demo step '%s': %s\n", step, buf);
-    d->failed = cli_exit_code(err->status);
-    return d->failed;
-}
-
-static int step_check(demo *d)
-{
-    char in[1024];
-    fl_error err;
-    fl_mesh mesh;
-    fl_mesh_report r;
-    path_in(in, sizeof in, d->data_dir, "torus.off");
-    double t0 = cli_now();
-    if (fl_read_mesh(in, &mesh, &err)) return step_failed(d, "check", &err);
-    fl_status st = fl_mesh_check(&mesh, NULL, &r, &err);
-    fl_mesh_free(&mesh);
-    if (st) return step_failed(d, "check", &err);
-    cli_json *j = &d->json;
-    cli_json_open_object(j, "check");
-    cli_json_string(j, "input", in);
-    cli_json_uint(j, "vertices", r.vertices);
-    cli_json_uint(j, "faces", r.faces);
-    cli_json_bool(j, "closed", r.closed);
-    cli_json_bool(j, "manifold", r.manifold);
-    cli_json_bool(j, "oriented", r.oriented);
-    cli_json_int(j, "genus", r.genus);
-    cli_json_uint(j, "self_intersections", r.self_intersections);
-    cli_json_double(j, "volume", r.volume);
-    cli_json_double(j, "seconds", cli_now() - t0);
-    cli_json_close(j);
-    if (!d->quiet)
-        printf("check     %s: %zu faces, %s, genus %lld, %zu self-intersections, volume %.4g\n", in,
-               r.faces, r.closed && r.manifold ? "closed manifold" : "NOT a closed manifold",
-               r.genus, r.self_intersections, r.volume);
-    fl_mesh_report_free(&r);
-    return 0;
-}
-
-static int step_delaunay2(demo *d)
-{
-    char in[1024], out[1024];
-    fl_error err;
-    fl_points p;
-    fl_dt2 dt = {0};
-    path_in(in, sizeof in, d->data_dir, "leaf.xy");
-    path_in(out, sizeof out, d->out_dir, "leaf-delaunay.off");
-    double t0 = cli_now();
-    if (fl_read_points(in, &p, &err)) return step_failed(d, "delaunay 2d", &err);
-    fl_status st = fl_dt2_build(p.coords, p.count, NULL, &dt, &err);
-    int valid = st == FL_OK && fl_dt2_verify(p.coords, &dt, &err) == FL_OK;
-    if (valid) st = cli_write_dt2(out, &p, &dt, &err);
-    double seconds = cli_now() - t0;
-    fl_points_free(&p);
-    if (st || !valid) {
-        fl_dt2_free(&dt);
-        return step_failed(d, "delaunay 2d", &err);
-    }
-    cli_json *j = &d->json;
-    cli_json_open_object(j, "delaunay_2d");
-    cli_json_string(j, "input", in);
-    cli_json_string(j, "output", out);
-    cli_json_uint(j, "points", dt.point_count);
-    cli_json_uint(j, "triangles", dt.triangle_count);
-    cli_json_uint(j, "hull_edges", dt.hull_count);
-    cli_json_bool(j, "valid", valid);
-    cli_json_double(j, "seconds", seconds);
-    cli_json_close(j);
-    if (!d->quiet)
-        printf("delaunay  %s: %zu points, %zu triangles, verified -> %s\n", in, dt.point_count,
-               dt.triangle_count, out);
-    fl_dt2_free(&dt);
-    return 0;
-}
-
-/* The leaf's scattered points back to a closed boundary (thesis ch. 5). */
-static int step_reconstruct2(demo *d)
-{
-    char in[1024], out[1024];
-    fl_error err;
-    fl_points p;
-    fl_reconstruction2 rec = {0};
-    path_in(in, sizeof in, d->data_dir, "leaf.xy");
-    path_in(out, sizeof out, d->out_dir, "leaf-boundary.svg");
-    double t0 = cli_now();
-    if (fl_read_points(in, &p, &err)) return step_failed(d, "reconstruct 2d", &err);
-    fl_status st = fl_reconstruct2(p.coords, p.count, NULL, &rec, &err);
-    if (st == FL_OK) st = fl_write_reconstruction2(out, p.coords, p.count, &rec, &err);
-    double seconds = cli_now() - t0;
-    fl_points_free(&p);
-    if (st) {
-        fl_reconstruction2_free(&rec);
-        return step_failed(d, "reconstruct 2d", &err);
-    }
-    cli_json *j = &d->json;
-    cli_json_open_object(j, "reconstruct_2d");
-    cli_json_string(j, "input", in);
-    cli_json_string(j, "output", out);
-    cli_json_uint(j, "points", rec.point_count);
-    cli_json_uint(j, "boundary_vertices", rec.boundary_count);
-    cli_json_bool(j, "all_on_boundary", rec.all_on_boundary);
-    cli_json_double(j, "area", rec.area);
-    cli_json_double(j, "seconds", seconds);
-    cli_json_close(j);
-    if (!d->quiet)
-        printf("boundary  %s: %zu of %zu points on a simple polygon, area %.4g -> %s\n", in,
-               rec.boundary_count, rec.unique_count, rec.area, out);
-    fl_reconstruction2_free(&rec);
-    return 0;
-}
-
-static int step_delaunay3(demo *d)
-{
-    char in[1024], out[1024];
-    fl_error err;
-    fl_points p;
-    fl_dt3 dt = {0};
-    path_in(in, sizeof in, d->data_dir, "peanut.xyz");
-    path_in(out, sizeof out, d->out_dir, "peanut-delaunay.vtk");
-    double t0 = cli_now();
-    if (fl_read_points(in, &p, &err)) return step_failed(d, "delaunay 3d", &err);
-    fl_status st = fl_dt3_build(p.coords, p.count, NULL, &dt, &err);
-    int valid = st == FL_OK && fl_dt3_verify(p.coords, &dt, &err) == FL_OK;
-    if (valid) st = fl_write_tets(out, p.coords, p.count, dt.tet, dt.tet_count, &err);
-    double seconds = cli_now() - t0;
-    fl_points_free(&p);
-    if (st || !valid) {
-        fl_dt3_free(&dt);
-        return step_failed(d, "delaunay 3d", &err);
-    }
-    cli_json *j = &d->json;
-    cli_json_open_object(j, "delaunay_3d");
-    cli_json_string(j, "input", in);
-    cli_json_string(j, "output", out);
-    cli_json_uint(j, "points", dt.point_count);
-    cli_json_uint(j, "tetrahedra", dt.tet_count);
-    cli_json_uint(j, "hull_faces", dt.hull_face_count);
-    cli_json_bool(j, "valid", valid);
-    cli_json_double(j, "seconds", seconds);
-    cli_json_close(j);
-    if (!d->quiet)
-        printf("delaunay  %s: %zu points, %zu tetrahedra, verified -> %s\n", in, dt.point_count,
-               dt.tet_count, out);
-    fl_dt3_free(&dt);
-    return 0;
-}
-
-/* The peanut's scattered points back to a closed genus-0 surface, checked independently. */
-static int step_reconstruct3(demo *d)
-{
-    char in[1024], out[1024];
-    fl_error err;
-    fl_points p;
-    fl_reconstruction3 rec = {0};
-    fl_mesh_report m = {0};
-    path_in(in, sizeof in, d->data_dir, "peanut.xyz");
-    path_in(out, sizeof out, d->out_dir, "peanut-boundary.off");
-    double t0 = cli_now();
-    if (fl_read_points(in, &p, &err)) return step_failed(d, "reconstruct 3d", &err);
-    fl_status st = fl_reconstruct3(p.coords, p.count, NULL, &rec, &err);
-    fl_mesh mesh = {p.count, p.coords, rec.triangle_count, rec.tri};
-    if (st == FL_OK) st = fl_mesh_check(&mesh, NULL, &m, &err);
-    if (st == FL_OK) st = fl_write_mesh(out, &mesh, &err);
-    double seconds = cli_now() - t0;
-    fl_points_free(&p);
-    if (st) {
-        fl_mesh_report_free(&m);
-        fl_reconstruction3_free(&rec);
-        return step_failed(d, "reconstruct 3d", &err);
-    }
-    cli_json *j = &d->json;
-    cli_json_open_object(j, "reconstruct_3d");
-    cli_json_string(j, "input", in);
-    cli_json_string(j, "output", out);
-    cli_json_uint(j, "points", rec.point_count);
-    cli_json_uint(j, "boundary_vertices", rec.boundary_vertex_count);
-    cli_json_bool(j, "all_on_boundary", rec.all_on_boundary);
-    cli_json_uint(j, "faces", rec.triangle_count);
-    cli_json_bool(j, "closed", m.closed);
-    cli_json_bool(j, "manifold", m.manifold);
-    cli_json_int(j, "genus", m.genus);
-    cli_json_uint(j, "self_intersections", m.self_intersections);
-    cli_json_double(j, "volume", rec.volume);
-    cli_json_double(j, "seconds", seconds);
-    cli_json_close(j);
-    if (!d->quiet)
-        printf("boundary  %s: %zu of %zu points on %zu triangles, %s, genus %lld -> %s\n", in,
-               rec.boundary_vertex_count, rec.unique_count, rec.triangle_count,
-               m.closed && m.manifold ? "closed manifold" : "NOT a closed manifold", m.genus, out);
-    fl_mesh_report_free(&m);
-    fl_reconstruction3_free(&rec);
-    return 0;
-}
-
-/* The bundled inputs live in the source tree; a relocated binary finds them in ./data/demo. */
 static const char *find_data_dir(void)
 {
     struct stat st;
@@ -248,64 +59,169 @@ static const char *find_data_dir(void)
     return "data/demo";
 }
 
-static int parse_args(int argc, char **argv, cli_common *c, demo *d)
+static int parse_args(int argc, char **argv, cli_common *c, run *r)
 {
     for (int i = 1; i < argc; i++) {
         int k = cli_common_option(c, argc, argv, &i);
         if (k < 0) return 1;
         if (k > 0) continue;
-        int is_data = strcmp(argv[i], "--data") == 0, is_out = strcmp(argv[i], "--out") == 0;
-        if ((is_data || is_out) && i + 1 >= argc)
-            return cli_fail(1, "demo: %s needs a directory", argv[i]);
-        if (is_data)
-            d->data_dir = argv[++i];
-        else if (is_out)
-            d->out_dir = argv[++i];
+        const char *opt = argv[i];
+        int takes = strcmp(opt, "--out") == 0 || (!r->report && strcmp(opt, "--data") == 0) ||
+                    (r->report && strcmp(opt, "--truth") == 0);
+        if (takes && i + 1 >= argc) return cli_fail(1, "%s: %s needs a value", argv[0], opt);
+        if (strcmp(opt, "--out") == 0)
+            r->out_dir = argv[++i];
+        else if (takes && !r->report)
+            r->data_dir = argv[++i];
+        else if (takes)
+            r->truth = argv[++i];
+        else if (r->report && opt[0] != '-' && !r->input)
+            r->input = opt;
         else
-            return cli_fail(1, "demo: unexpected argument '%s' (see flintstone demo --help)",
-                            argv[i]);
+            return cli_fail(1, "%s: unexpected argument '%s' (see flintstone %s --help)",
+                            argv[0], opt, argv[0]);
     }
-    if (c->output) d->out_dir = c->output;
+    if (c->output) r->out_dir = c->output;
+    if (r->report && !c->help && !r->input)
+        return cli_fail(1, "report: which input? (see flintstone report --help)");
     return 0;
 }
 
-int cmd_demo(int argc, char **argv)
+/* Every input must be readable before anything is written. */
+static int check_readable(const char *path)
 {
-    cli_common c = {0};
-    demo d = {find_data_dir(), "demo-out", {0}, {0}, 0, 0};
-    if (parse_args(argc, argv, &c, &d)) return 1;
-    if (c.help) {
-        fputs(usage_text, stdout);
+    FILE *f = fopen(path, "rb");
+    if (!f) return cli_fail(4, "cannot open '%s': %s", path, strerror(errno));
+    fclose(f);
+    return 0;
+}
+
+static void data_path(const run *r, char *buf, size_t size, const char *name)
+{
+    snprintf(buf, size, "%s/%s", r->data_dir, name);
+}
+
+/* The input's dimension decides the pipeline: a mesh or 3D points go to the 3D one. */
+static int input_dim(const char *path)
+{
+    fl_error err;
+    fl_mesh m;
+    if (fl_read_mesh(path, &m, &err) == FL_OK) {
+        int has_faces = m.triangle_count > 0;
+        fl_mesh_free(&m);
+        if (has_faces) return 3;
+    }
+    fl_points p = {0};
+    int dim = fl_read_points(path, &p, &err) == FL_OK ? p.dim : 0;
+    fl_points_free(&p);
+    return dim;
+}
+
+static int run_pipeline(const run *r, pipeline *pl)
+{
+    if (r->report) {
+        const char *base = strrchr(r->input, '/');
+        base = base ? base + 1 : r->input;
+        char name[128];
+        snprintf(name, sizeof name, "%.*s", (int)strcspn(base, "."), base);
+        if (!name[0]) snprintf(name, sizeof name, "input");
+        if (input_dim(r->input) == 2)
+            pl_run_2d(pl, name, r->input, r->truth);
+        else
+            pl_run_3d(pl, name, r->input, r->truth);
         return 0;
     }
-    d.quiet = c.quiet || c.json;
-    if (mkdir(d.out_dir, 0777) != 0 && errno != EEXIST)
-        return cli_fail(4, "demo: cannot create output directory '%s': %s", d.out_dir,
-                        strerror(errno));
-    char summary[1024];
-    fl_error err;
-    path_in(summary, sizeof summary, d.out_dir, "summary.json");
-    if (fl_out_open(&d.summary, summary, 0, &err)) return cli_report(&err);
-    double t0 = cli_now();
-    cli_json_begin(&d.json, d.summary.fp);
-    cli_json_string(&d.json, "flintstone", fl_version());
-    if (!step_check(&d) && !step_delaunay2(&d) && !step_reconstruct2(&d) && !step_delaunay3(&d))
-        step_reconstruct3(&d);
-    cli_json_double(&d.json, "seconds", cli_now() - t0);
-    cli_json_end(&d.json);
-    if (d.failed) {
-        fl_out_abort(&d.summary);
-        return d.failed;
+    char leaf[1024], leaf_truth[1024], peanut[1024], peanut_truth[1024], torus[1024];
+    data_path(r, leaf, sizeof leaf, "leaf.xy");
+    data_path(r, leaf_truth, sizeof leaf_truth, "leaf-truth.xy");
+    data_path(r, peanut, sizeof peanut, "peanut.xyz");
+    data_path(r, peanut_truth, sizeof peanut_truth, "peanut-truth.off");
+    data_path(r, torus, sizeof torus, "torus.off");
+    pl_run_2d(pl, "leaf", leaf, leaf_truth);
+    pl_run_3d(pl, "peanut", peanut, peanut_truth);
+    pl_run_3d(pl, "torus", torus, NULL);
+    return 0;
+}
+
+static int preflight(const run *r)
+{
+    if (r->report) {
+        if (check_readable(r->input)) return 4;
+        return r->truth ? check_readable(r->truth) : 0;
     }
-    if (fl_out_commit(&d.summary, &err)) return cli_report(&err);
+    static const char *files[] = {"leaf.xy", "leaf-truth.xy", "peanut.xyz", "peanut-truth.off",
+                                  "torus.off"};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        char p[1024];
+        data_path(r, p, sizeof p, files[i]);
+        if (check_readable(p)) return 4;
+    }
+    return 0;
+}
+
+static int run_main(int argc, char **argv, run *r, const char *usage)
+{
+    cli_common c = {0};
+    if (parse_args(argc, argv, &c, r)) return 1;
+    if (c.help) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    int code = preflight(r);
+    if (code) return code;
+    if (mkdir(r->out_dir, 0777) != 0 && errno != EEXIST)
+        return cli_fail(4, "%s: cannot create output directory '%s': %s", argv[0], r->out_dir,
+                        strerror(errno));
+    char summary[1024], html[1024];
+    snprintf(summary, sizeof summary, "%s/summary.json", r->out_dir);
+    snprintf(html, sizeof html, "%s/report.html", r->out_dir);
+    fl_error err;
+    fl_out_file out;
+    if (fl_out_open(&out, summary, 0, &err)) return cli_report(&err);
+    cli_json json;
+    pipeline pl = {r->out_dir, &json, NULL, c.quiet || c.json, 0, 0};
+    pl.page = cli_page_new(r->report ? "flintstone report" : "flintstone demo",
+                           "Closed object boundaries from scattered points, and what one does "
+                           "with them. Every step below shows its picture, its key numbers and "
+                           "the command that reproduces it.");
+    if (!pl.page) {
+        fl_out_abort(&out);
+        return cli_fail(3, "out of memory");
+    }
+    double t0 = cli_now();
+    cli_json_begin(&json, out.fp);
+    cli_json_string(&json, "flintstone", fl_version());
+    cli_json_string(&json, "report", "report.html");
+    run_pipeline(r, &pl);
+    cli_json_double(&json, "seconds", cli_now() - t0);
+    cli_json_end(&json);
+    fl_status st = fl_out_commit(&out, &err);
+    if (st == FL_OK) st = cli_page_write(pl.page, html, &err);
+    cli_page_free(pl.page);
+    if (st) return cli_report(&err);
     if (c.json) {
         cli_json j;
         cli_json_begin(&j, stdout);
         cli_json_string(&j, "summary", summary);
+        cli_json_string(&j, "report", html);
+        cli_json_bool(&j, "ok", pl.failed == 0);
         cli_json_double(&j, "seconds", cli_now() - t0);
         cli_json_end(&j);
     } else if (!c.quiet) {
-        printf("demo done in %.2f s; summary in %s\n", cli_now() - t0, summary);
+        printf("%s in %.2f s; open %s (numbers in %s)\n",
+               pl.failed ? "finished WITH ERRORS" : "done", cli_now() - t0, html, summary);
     }
-    return 0;
+    return pl.failed;
+}
+
+int cmd_demo(int argc, char **argv)
+{
+    run r = {find_data_dir(), "demo-out", NULL, NULL, 0};
+    return run_main(argc, argv, &r, demo_usage);
+}
+
+int cmd_report(int argc, char **argv)
+{
+    run r = {NULL, "report-out", NULL, NULL, 1};
+    return run_main(argc, argv, &r, report_usage);
 }

@@ -5,6 +5,7 @@
 int cmd_version(int argc, char **argv);
 int cmd_check(int argc, char **argv);
 int cmd_demo(int argc, char **argv);
+int cmd_report(int argc, char **argv);
 int cmd_delaunay(int argc, char **argv);
 int cmd_graph(int argc, char **argv);
 int cmd_reconstruct(int argc, char **argv);

@@ -7,7 +7,8 @@
 #include "cli/commands.h"
 
 static const cli_command commands[] = {
-    {"demo", "run the main job on the bundled default inputs and write demo-out/", cmd_demo},
+    {"demo", "run the whole pipeline on the bundled inputs: demo-out/report.html", cmd_demo},
+    {"report", "the same pipeline on your own points or mesh, with an HTML report", cmd_report},
     {"check", "report topology, validity and measures of a mesh or polygon file", cmd_check},
     {"delaunay", "Delaunay triangulation of 2D/3D points, regular triangulation of balls",
      cmd_delaunay},

@@ -84,6 +84,16 @@ static void end_step(cli_page *p)
     p->in_step = 0;
 }
 
+void cli_page_group(cli_page *p, const char *title, const char *text)
+{
+    end_step(p);
+    puts_raw(p, "<h2 class=\"group\">");
+    puts_escaped(p, title);
+    puts_raw(p, "</h2>\n<p>");
+    puts_escaped(p, text);
+    puts_raw(p, "</p>\n");
+}
+
 void cli_page_step(cli_page *p, const char *title, const char *image, const char *text,
                    const char *command)
 {
@@ -94,9 +104,9 @@ void cli_page_step(cli_page *p, const char *title, const char *image, const char
     snprintf(id, sizeof id, "step-%d", p->steps);
     puts_raw(p, "<section id=\"");
     puts_raw(p, id);
-    puts_raw(p, "\"><h2>");
+    puts_raw(p, "\"><h3>");
     puts_escaped(p, title);
-    puts_raw(p, "</h2>\n");
+    puts_raw(p, "</h3>\n");
     if (image) {
         puts_raw(p, "<figure><img src=\"");
         puts_escaped(p, image);
@@ -170,7 +180,7 @@ static const char *style =
     "body{font:15px/1.45 system-ui,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;"
     "color:#1d2329}h1{margin-bottom:.2em}section{border-top:1px solid #ccd;padding:1em 0;"
     "display:grid;grid-template-columns:minmax(0,1fr) minmax(0,1fr);gap:1.5em}"
-    "section h2{grid-column:1/-1;margin:0}figure{margin:0}img{width:100%;height:auto;"
+    "section h3{grid-column:1/-1;margin:0}h2.group{margin-top:1.6em}figure{margin:0}img{width:100%;height:auto;"
     "border:1px solid #dde;background:#fff}table{border-collapse:collapse;width:100%}"
     "td,th{border-bottom:1px solid #eef;padding:.25em .4em;text-align:left;vertical-align:top}"
     "td.v{font-family:ui-monospace,monospace;white-space:nowrap}pre{background:#f4f5f7;"

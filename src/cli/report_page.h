@@ -12,6 +12,9 @@ typedef struct cli_page cli_page;
 cli_page *cli_page_new(const char *title, const char *intro);
 void cli_page_free(cli_page *page);
 
+/* A heading over the steps that follow (one input's pipeline). */
+void cli_page_group(cli_page *page, const char *title, const char *text);
+
 /* Opens a step section. `image` is a path relative to the page (PNG or SVG) or NULL; `text`
  * one paragraph saying what the step does; `command` the command line that reproduces it
  * (NULL: none). Ends the previous section. */

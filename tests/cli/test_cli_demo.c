@@ -62,5 +62,43 @@ static void test_demo_with_missing_data_fails_without_summary(void)
     CHECK_EQ_INT(system("rm -rf demo_test_missing"), 0);
 }
 
+static void test_report_on_user_mesh_and_points_runs_the_steps_that_apply(void)
+{
+    static char summary[1 << 16];
+    CHECK_EQ_INT(cli_run(&r, "report " FL_SOURCE_DIR "/data/demo/torus.off --out rep_mesh --quiet"),
+                 0);
+    cli_read_file("rep_mesh/summary.json", summary, sizeof summary);
+    CHECK(strstr(summary, "\"torus\":{") != NULL);
+    CHECK(strstr(summary, "\"reconstruct_3d\"") == NULL); /* a mesh skips reconstruction */
+    CHECK_EQ_INT(number_after(summary, "\"check\":{", "genus"), 1);
+    CHECK_EQ_INT(cli_run(&r, "report " FL_SOURCE_DIR "/data/demo/leaf.xy --truth " FL_SOURCE_DIR
+                             "/data/demo/leaf-truth.xy --out rep_pts --json"),
+                 0);
+    CHECK(strstr(r.out, "\"ok\":true") != NULL);
+    cli_read_file("rep_pts/summary.json", summary, sizeof summary);
+    CHECK(strstr(summary, "\"leaf\":{") != NULL);
+    CHECK(strstr(summary, "\"distance_2d\":{") != NULL);
+    CHECK_EQ_INT(system("rm -rf rep_mesh rep_pts"), 0);
+}
+
+static void test_report_on_missing_or_bad_input_fails_cleanly(void)
+{
+    CHECK_EQ_INT(cli_run(&r, "report no-such-file.xyz --out rep_missing"), 4);
+    CHECK(strstr(r.err, "no-such-file.xyz") != NULL);
+    FILE *f = fopen("rep_missing/summary.json", "r");
+    CHECK(f == NULL);
+    if (f) fclose(f);
+    CHECK_EQ_INT(cli_run(&r, "report"), 1);
+    cli_write_file("rep_bad.xyz", "0 0 0\n1 nan 0\n0 1 0\n0 0 1\n");
+    /* The report is still written, saying what failed; the exit code is the failure's. */
+    CHECK_EQ_INT(cli_run(&r, "report rep_bad.xyz --out rep_bad --quiet"), 2);
+    static char html[1 << 16];
+    cli_read_file("rep_bad/report.html", html, sizeof html);
+    CHECK(strstr(html, "failed") != NULL);
+    CHECK_EQ_INT(system("rm -rf rep_missing rep_bad rep_bad.xyz"), 0);
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_demo_writes_summary_and_report_with_every_step_valid),
-             FL_TEST_CASE(test_demo_with_missing_data_fails_without_summary))
+             FL_TEST_CASE(test_demo_with_missing_data_fails_without_summary),
+             FL_TEST_CASE(test_report_on_user_mesh_and_points_runs_the_steps_that_apply),
+             FL_TEST_CASE(test_report_on_missing_or_bad_input_fails_cleanly))

@@ -16,7 +16,7 @@ build=${FL_BENCH_BUILD:-$root/build-bench}
 # Debian packages the bench needs: the build, the peers, node for the data conversion. Node and
 # npm are looked for as commands, since some machines have them from another nodejs package
 # that bundles npm.
-packages=(gcc g++ make cmake libassimp-dev libcgal-dev qhull-bin tetgen)
+packages=(gcc g++ make cmake libassimp-dev libcgal-dev libgeos-dev qhull-bin tetgen)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -43,6 +43,22 @@ static int cmp_u32(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* Rows of a planar graph hold about six entries: insertion sort beats qsort's call overhead
+ * there; long rows (a hub vertex) still go to qsort. */
+static void sort_row(uint32_t *a, size_t n)
+{
+    if (n > 24) {
+        qsort(a, n, sizeof *a, cmp_u32);
+        return;
+    }
+    for (size_t i = 1; i < n; i++) {
+        uint32_t x = a[i];
+        size_t j = i;
+        for (; j > 0 && a[j - 1] > x; j--) a[j] = a[j - 1];
+        a[j] = x;
+    }
+}
+
 /* Builds the adjacency of `m` undirected edges (pairs) on n vertices, rows sorted, repeats
  * removed. 0, or -1 when out of memory. */
 static int csr_build(csr *g, size_t n, const uint32_t *edges, size_t m)
@@ -66,7 +82,7 @@ static int csr_build(csr *g, size_t n, const uint32_t *edges, size_t m)
     size_t out = 0;
     for (size_t v = 0; v < n; v++) {
         size_t from = g->start[v], to = g->start[v + 1];
-        qsort(g->nb + from, to - from, sizeof *g->nb, cmp_u32);
+        sort_row(g->nb + from, to - from);
         g->start[v] = out;
         for (size_t i = from; i < to; i++)
             if (i == from || g->nb[i] != g->nb[i - 1]) g->nb[out++] = g->nb[i];
@@ -104,13 +120,20 @@ static void next_stamp(scratch *sc, size_t n)
     }
 }
 
-/* c1' of edge u-w (see the file comment); -2 when a point lies on the open segment. */
-static double lens_param(const c2_state *s, const csr *dt, scratch *sc, uint32_t u, uint32_t w)
+/* c1' of edge u-w (see the file comment); -2 when a point lies on the open segment. The
+ * search stops as soon as the edge is known to be outside γ([-1,1],[c0,1]) (c1' < c0), returning
+ * a value below c0: far pairs have many points in their disc, and one close to the segment
+ * usually turns up within a few steps. */
+static double lens_param(const c2_state *s, const csr *dt, scratch *sc, uint32_t u, uint32_t w,
+                         double c0)
 {
     const double *pu = c2_pt(s, u), *pw = c2_pt(s, w);
     double min_sin = 1;
     int e; /* products are taken in a frame scaled by 2^-e, |u - w| ~ 1: no overflow */
     frexp(fmax(fabs(pu[0] - pw[0]), fabs(pu[1] - pw[1])), &e);
+    /* Multiplying by a power of two rounds exactly like ldexp (both are exact unless the
+     * result is subnormal) and costs a multiplication instead of a libm call. */
+    const double scale = ldexp(1.0, -e);
     size_t head = 0, tail = 0;
     next_stamp(sc, s->n);
     sc->stamp[u] = sc->stamp[w] = sc->now;
@@ -123,15 +146,21 @@ static double lens_param(const c2_state *s, const csr *dt, scratch *sc, uint32_t
             if (sc->stamp[p] == sc->now) continue;
             sc->stamp[p] = sc->now;
             const double *pp = c2_pt(s, p);
-            double ax = ldexp(pu[0] - pp[0], -e), ay = ldexp(pu[1] - pp[1], -e);
-            double bx = ldexp(pw[0] - pp[0], -e), by = ldexp(pw[1] - pp[1], -e);
+            double ax = (pu[0] - pp[0]) * scale, ay = (pu[1] - pp[1]) * scale;
+            double bx = (pw[0] - pp[0]) * scale, by = (pw[1] - pp[1]) * scale;
             double dot = ax * bx + ay * by;
             if (dot > 0) continue; /* outside the disc with diameter u-w: θ acute */
             sc->queue[tail++] = p;
             if (dot == 0) continue;
             if (fl_orient2d(pu, pw, pp) == 0) return -2;
-            double sin_t = fabs(ax * by - ay * bx) / hypot(ax, ay) / hypot(bx, by);
+            /* |a|, |b| <= |u - w| ~ 1 here (p is in the disc on u-w), so the squares only
+             * underflow for p within ~1e-154 of u or w; hypot takes over then. */
+            double aa = ax * ax + ay * ay, bb = bx * bx + by * by;
+            double len = aa > 0x1p-900 && bb > 0x1p-900 ? sqrt(aa * bb)
+                                                         : hypot(ax, ay) * hypot(bx, by);
+            double sin_t = fabs(ax * by - ay * bx) / len;
             if (sin_t < min_sin) min_sin = sin_t;
+            if (min_sin - 1 < c0) return min_sin - 1;
         }
     }
     return min_sin < 1 ? min_sin - 1 : 0;
@@ -177,7 +206,7 @@ static int extra_edges_at(const c2_state *s, const csr *dt, const csr *base, scr
             near->depth[w] = near->depth[v] + 1;
             near->queue[tail++] = w;
             if (near->depth[w] < 2 || (s->on_boundary[w] == 0 && w < u)) continue;
-            if (lens_param(s, dt, lens, u, w) >= c0 && edges_add(out, u, w)) return -1;
+            if (lens_param(s, dt, lens, u, w, c0) >= c0 && edges_add(out, u, w)) return -1;
         }
     }
     return 0;
@@ -201,6 +230,10 @@ int c2_push_graph_candidates(c2_state *s, uint32_t a)
 static int collect_graphs(const c2_state *s, csr *base, csr *dt)
 {
     edges l = {0};
+    size_t cap = 3 * (s->tcount > s->dt_count ? s->tcount : s->dt_count) + 1;
+    l.e = fl_alloc_array(cap, 2 * sizeof *l.e);
+    if (!l.e) return -1;
+    l.cap = cap;
     int r = 0;
     for (size_t t = 0; t < s->tcount && !r; t++)
         for (int k = 0; k < 3 && s->alive[t] && !r; k++)

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Closest points on meshes against CGAL's AABB tree (docs/sweep.md, "Against CGAL's AABB tree"):
+# the same binary mesh and query files for both (bench/closest_eval.h, made by
+# `eval_closest prepare`), three query streams per mesh (random in the grown bounding box, near
+# the surface in random order, a coherent random walk), exact answers on both sides, compared
+# query by query. Times: the median over BENCH_ROUNDS alternating processes of each process's
+# median of CLOSEST_REPS runs; the ratio is ours / CGAL for the queries; builds are in the notes.
+#
+# Environment besides lib.sh's: CLOSEST_QUERIES (default 200000), CLOSEST_REPS (default 1).
+set -euo pipefail
+source "$(dirname "$0")/../lib.sh"
+NQ=${CLOSEST_QUERIES:-200000}
+REPS=${CLOSEST_REPS:-1}
+
+one_mesh() { # NAME FILE NOTES
+  local name=$1 file=$2 notes=$3 prefix=$BENCH_DATA/closest-$1 kind o p ob pb line diff prep
+  [ -e "$file" ] || { echo "ERROR|closest_$name|$file missing (bench/get-data.sh)"; return 0; }
+  prep=$("$BENCH_BIN/eval_closest" prepare "$file" "$prefix" "$NQ") ||
+    { echo "ERROR|closest_$name|prepare failed"; return 0; }
+  for kind in random near path; do
+    o="" p="" ob="" pb=""
+    for ((r = 0; r < BENCH_ROUNDS; r++)); do
+      line=$("$BENCH_BIN/eval_closest" run "$prefix" $kind "$REPS" | grep '^RESULT') ||
+        { echo "ERROR|closest_${name}_$kind|ours failed"; return 0; }
+      o+="$(field query_s "$line")"$'\n'
+      ob+="$(field build_s "$line")"$'\n'
+      line=$("$BENCH_BIN/cgal_aabb" "$prefix" $kind "$REPS" | grep '^RESULT') ||
+        { echo "ERROR|closest_${name}_$kind|CGAL failed"; return 0; }
+      p+="$(field query_s "$line")"$'\n'
+      pb+="$(field build_s "$line")"$'\n'
+    done
+    diff=$("$BENCH_BIN/eval_closest" compare "$prefix.$kind.ours.d" "$prefix.$kind.cgal.d")
+    o=$(median <<<"${o%$'\n'}") p=$(median <<<"${p%$'\n'}")
+    printf 'ROW|closest_%s_%s|%s|CGAL AABB_tree|%s|%s|%s; %s %s queries; distances agree to %s (largest distance %s); build ours %s s, CGAL %s s (tree + accelerate_distance_queries)\n' \
+      "$name" $kind "$o" "$p" "$(awk -v o="$o" -v p="$p" 'BEGIN {printf "%.2f", o / p}')" "$notes" \
+      "$NQ" $kind "$(field max_abs_diff "$diff")" "$(field max_distance "$diff")" \
+      "$(median <<<"${ob%$'\n'}")" "$(median <<<"${pb%$'\n'}")"
+  done
+}
+one_mesh bunny "$BENCH_CACHE/real/bunny.off" "npm bunny (3 674 triangles)"
+one_mesh armadillo "$BENCH_CACHE/cgal/data/meshes/armadillo.off" "libcgal-demo armadillo.off (52 000 triangles)"
+one_mesh bunny00 "$BENCH_CACHE/cgal/data/meshes/bunny00.off" "libcgal-demo bunny00.off (75 408 triangles)"

@@ -108,36 +108,105 @@ static void representative(const fl_mesh *m, const uint32_t *perm, size_t start,
 
 /* A triangle enclosing the 2D points uv[0..n): over the four sides of their bounding box as
  * base and three side slopes around the one that gives area 2wh for a rectangle, the
- * smallest of the triangles whose two sides touch the points. Writes the corners to tri. */
+ * smallest of the triangles whose two sides touch the points. Writes the corners to tri.
+ * All twelve candidates are measured in one pass over the points (this runs once a node, on
+ * every vertex below it, so it is a large part of the build). */
 static void enclosing_triangle(const double *uv, size_t n, const double *lo, const double *hi,
                                double tri[3][2])
 {
     static const int axis[4][2] = {{0, 1}, {0, 1}, {1, 0}, {1, 0}}; /* (x, y) from (u, v) */
     static const double flip[4] = {1, -1, 1, -1};
-    double best = INFINITY;
+    static const double factor[3] = {0.5, 1, 2};
+    double y0[4], slope[4][3], inv[4][3], left[4][3], right[4][3];
     for (int o = 0; o < 4; o++) {
         int ax = axis[o][0], ay = axis[o][1];
         double w = hi[ax] - lo[ax], h = hi[ay] - lo[ay];
-        double y0 = flip[o] > 0 ? lo[ay] : -hi[ay];
         double s0 = w > 0 && h > 0 ? 2 * h / w : 1;
+        y0[o] = flip[o] > 0 ? lo[ay] : -hi[ay];
         for (int k = 0; k < 3; k++) {
-            double slope = s0 * (k == 0 ? 0.5 : k == 1 ? 1 : 2), left = INFINITY, right = -INFINITY;
-            for (size_t i = 0; i < n; i++) {
-                double x = uv[2 * i + ax], y = flip[o] * uv[2 * i + ay] - y0;
-                left = fmin(left, x - y / slope);
-                right = fmax(right, x + y / slope);
-            }
-            double area = slope * (right - left) * (right - left);
-            if (!(area < best)) continue;
-            best = area;
-            double corner[3][2] = {
-                {left, 0}, {right, 0}, {(left + right) / 2, slope * (right - left) / 2}};
-            for (int c = 0; c < 3; c++) {
-                tri[c][ax] = corner[c][0];
-                tri[c][ay] = flip[o] * (corner[c][1] + y0);
+            slope[o][k] = s0 * factor[k];
+            inv[o][k] = 1 / slope[o][k];
+            left[o][k] = INFINITY;
+            right[o][k] = -INFINITY;
+        }
+    }
+    for (size_t i = 0; i < n; i++) {
+        for (int o = 0; o < 4; o++) {
+            double x = uv[2 * i + axis[o][0]], y = flip[o] * uv[2 * i + axis[o][1]] - y0[o];
+            for (int k = 0; k < 3; k++) {
+                double t = y * inv[o][k], l = x - t, r = x + t;
+                left[o][k] = l < left[o][k] ? l : left[o][k];
+                right[o][k] = r > right[o][k] ? r : right[o][k];
             }
         }
     }
+    double best = INFINITY;
+    for (int o = 0; o < 4; o++)
+        for (int k = 0; k < 3; k++) {
+            double width = right[o][k] - left[o][k], area = slope[o][k] * width * width;
+            if (!(area < best)) continue;
+            best = area;
+            int ax = axis[o][0], ay = axis[o][1];
+            double corner[3][2] = {{left[o][k], 0},
+                                   {right[o][k], 0},
+                                   {(left[o][k] + right[o][k]) / 2, slope[o][k] * width / 2}};
+            for (int c = 0; c < 3; c++) {
+                tri[c][ax] = corner[c][0];
+                tri[c][ay] = flip[o] * (corner[c][1] + y0[o]);
+            }
+        }
+}
+
+/* Squared distance from p to the triangle v[0..8], with a fast path for the common case of a
+ * point whose projection falls well inside it (every node vertex does, the triangle encloses
+ * their projections): then the distance is the distance to the plane. Barycentrics above
+ * 1e-6 leave no doubt which case applies despite rounding; the rest go through the full
+ * closest-point routine. */
+typedef struct tri_frame {
+    double a[3], b[3], nrm[3], d00, d01, d11, inv_denom;
+    int ok;
+} tri_frame;
+
+static void tri_frame_init(tri_frame *f, const double *v)
+{
+    double n2 = 0;
+    for (int c = 0; c < 3; c++) {
+        f->a[c] = v[3 + c] - v[c];
+        f->b[c] = v[6 + c] - v[c];
+    }
+    f->nrm[0] = f->a[1] * f->b[2] - f->a[2] * f->b[1];
+    f->nrm[1] = f->a[2] * f->b[0] - f->a[0] * f->b[2];
+    f->nrm[2] = f->a[0] * f->b[1] - f->a[1] * f->b[0];
+    f->d00 = f->d01 = f->d11 = 0;
+    for (int c = 0; c < 3; c++) {
+        n2 += f->nrm[c] * f->nrm[c];
+        f->d00 += f->a[c] * f->a[c];
+        f->d01 += f->a[c] * f->b[c];
+        f->d11 += f->b[c] * f->b[c];
+    }
+    double denom = f->d00 * f->d11 - f->d01 * f->d01;
+    f->ok = n2 > 0 && denom > 0 && isfinite(1 / denom) && isfinite(1 / sqrt(n2));
+    if (!f->ok) return;
+    f->inv_denom = 1 / denom;
+    double inv_len = 1 / sqrt(n2);
+    for (int c = 0; c < 3; c++) f->nrm[c] *= inv_len;
+}
+
+static double tri_dist2(const tri_frame *f, const double *v, const double *p)
+{
+    if (f->ok) {
+        double w[3] = {p[0] - v[0], p[1] - v[1], p[2] - v[2]};
+        double d20 = w[0] * f->a[0] + w[1] * f->a[1] + w[2] * f->a[2];
+        double d21 = w[0] * f->b[0] + w[1] * f->b[1] + w[2] * f->b[2];
+        double beta = (f->d11 * d20 - f->d01 * d21) * f->inv_denom;
+        double gamma = (f->d00 * d21 - f->d01 * d20) * f->inv_denom;
+        if (beta > 1e-6 && gamma > 1e-6 && 1 - beta - gamma > 1e-6) {
+            double h = w[0] * f->nrm[0] + w[1] * f->nrm[1] + w[2] * f->nrm[2];
+            return h * h;
+        }
+    }
+    double bary[3], closest[3];
+    return fl_sweep_triangle_closest(p, v, v + 3, v + 6, bary, closest);
 }
 
 /* The bounding element of a node: a triangle in the principal plane of the node's vertices
@@ -157,8 +226,8 @@ static void bounding_triangle(const fl_mesh *m, const uint32_t *perm, size_t sta
                 double x = (p[0] - mean[0]) * e[a][0] + (p[1] - mean[1]) * e[a][1] +
                            (p[2] - mean[2]) * e[a][2];
                 if (a < 2) uv[2 * n + a] = x;
-                lo[a] = fmin(lo[a], x);
-                hi[a] = fmax(hi[a], x);
+                lo[a] = x < lo[a] ? x : lo[a]; /* not fmin/fmax: libm calls, and x is finite */
+                hi[a] = x > hi[a] ? x : hi[a];
             }
         }
     double corner[3][2], mid_n = (lo[2] + hi[2]) / 2;
@@ -167,13 +236,15 @@ static void bounding_triangle(const fl_mesh *m, const uint32_t *perm, size_t sta
         for (int c = 0; c < 3; c++)
             node->v[3 * k + c] =
                 mean[c] + corner[k][0] * e[0][c] + corner[k][1] * e[1][c] + mid_n * e[2][c];
-    /* Measured, not derived from the frame, so rounding in the frame cannot shrink it. */
-    double eps2 = 0, bary[3], closest[3];
+    /* Measured against the stored triangle, not derived from the frame, so rounding in the
+     * frame cannot shrink it. */
+    double eps2 = 0;
+    tri_frame f;
+    tri_frame_init(&f, node->v);
     for (size_t i = start; i < end; i++)
         for (int k = 0; k < 3; k++) {
-            const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
-            eps2 = fmax(eps2, fl_sweep_triangle_closest(p, node->v, node->v + 3, node->v + 6, bary,
-                                                        closest));
+            double d2 = tri_dist2(&f, node->v, m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k]);
+            eps2 = d2 > eps2 ? d2 : eps2;
         }
     node->eps = fl_sweep_widen(sqrt(eps2), scale);
     representative(m, perm, start, end, mean, node->rep);
@@ -216,8 +287,9 @@ static int widest_axis(const uint32_t *perm, const double *centroid, size_t star
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = start; i < end; i++)
         for (int c = 0; c < 3; c++) {
-            lo[c] = fmin(lo[c], centroid[3 * (size_t)perm[i] + c]);
-            hi[c] = fmax(hi[c], centroid[3 * (size_t)perm[i] + c]);
+            double x = centroid[3 * (size_t)perm[i] + c];
+            lo[c] = x < lo[c] ? x : lo[c];
+            hi[c] = x > hi[c] ? x : hi[c];
         }
     int axis = 0;
     for (int c = 1; c < 3; c++)

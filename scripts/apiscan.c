@@ -33,6 +33,7 @@ typedef struct item {
     int section;     /* index into sections, -1 before the first */
     char name[128];  /* declared name (functions, typedefs, macros) */
     int is_function;
+    int is_static;   /* a static (inline) function: documented, not exported */
     int doc;         /* index of the first comment of its doc run, -1 if none */
     int doc_end;     /* one past the last comment of the doc run */
 } item;
@@ -126,20 +127,28 @@ static const char *comment_end(const char *s)
     return e + 2;
 }
 
-/* End of a declaration: the ';' outside braces/parentheses (comments inside are skipped). */
+/* End of a declaration: the ';' outside braces/parentheses (comments inside are skipped), or
+ * the closing brace of a function body (a static inline function in the header). */
 static const char *decl_end(const char *s)
 {
-    int depth = 0;
+    int depth = 0, body = 0;
+    char last = 0; /* last non-blank code character at depth 0 */
     for (; *s; s++) {
         if (s[0] == '/' && (s[1] == '*' || s[1] == '/')) {
             s = comment_end(s) - 1;
-        } else if (*s == '{' || *s == '(') {
+            continue;
+        }
+        if (*s == '{' && depth == 0) body = last == ')';
+        if (*s == '{' || *s == '(') {
             depth++;
         } else if (*s == '}' || *s == ')') {
             depth--;
+            if (depth == 0 && *s == '}' && body) return s + 1;
         } else if (*s == ';' && depth == 0) {
             return s + 1;
         }
+        if (depth == 0 && !isspace((unsigned char)*s)) last = *s;
+        if (*s == ')' && depth == 0) last = ')';
     }
     die("declaration without ';' at end of file");
     return s;
@@ -199,7 +208,9 @@ static void name_declaration(item *it)
             if (semi) ident_before(p, semi, it->name, sizeof it->name);
         }
     } else if (paren && (!brace || paren < brace)) {
+        /* static (inline) functions are documented but not exported */
         it->is_function = ident_before(p, paren, it->name, sizeof it->name);
+        it->is_static = strncmp(p, "static", 6) == 0 && !is_ident((unsigned char)p[6]);
     } else if (brace) {
         /* enum { FIRST = 0, ... };  -> named after its first enumerator */
         char *b = brace + 1;
@@ -370,7 +381,8 @@ static const char **function_names(size_t *count)
     if (!names) die("out of memory");
     size_t n = 0;
     for (size_t i = 0; i < item_count; i++)
-        if (items[i].kind == ITEM_DECL && items[i].is_function) names[n++] = items[i].name;
+        if (items[i].kind == ITEM_DECL && items[i].is_function && !items[i].is_static)
+            names[n++] = items[i].name;
     qsort(names, n, sizeof *names, cmp_names);
     size_t u = 0;
     for (size_t i = 0; i < n; i++)

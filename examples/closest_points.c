@@ -71,8 +71,9 @@ int main(int argc, char **argv)
     if (st == FL_OK && argc > 2) {
         st = fl_read_points(argv[2], &pts, &err);
         if (st == FL_OK && pts.dim != 3) {
-            fprintf(stderr, "error: %s: need 3D query points\n", argv[2]);
-            st = FL_ERR_INPUT;
+            st = err.status = FL_ERR_INPUT;
+            snprintf(err.message, sizeof err.message, "%s: need 3D query points", argv[2]);
+            err.file[0] = '\0';
         }
         q = pts.coords;
         n = pts.count;
@@ -104,7 +105,7 @@ int main(int argc, char **argv)
                mesh.triangle_count, n, sum / (double)n, max);
         printf("%.1f hierarchy nodes visited a query, %zu answered from the coherence ball\n",
                (double)visited / (double)n, reused);
-    } else if (st != FL_ERR_NOMEM && st != FL_ERR_INPUT) {
+    } else if (st != FL_ERR_NOMEM) {
         report(&err);
     }
     if (argc <= 2) free(q);

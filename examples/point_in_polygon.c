@@ -57,6 +57,7 @@ static fl_status leaf_polygon(fl_polygon *poly, fl_error *err)
             fl_polygon_free(poly);
             st = FL_ERR_NOMEM;
             err->status = st;
+            err->file[0] = '\0';
             snprintf(err->message, sizeof err->message, "out of memory");
         }
         fl_reconstruction2_free(&rec);
@@ -118,6 +119,7 @@ static fl_status classify_file(const fl_hal2 *hal, const char *path, fl_error *e
     fl_status st = fl_read_points(path, &pts, err);
     if (st != FL_OK) return st;
     uint8_t *where = malloc(pts.count ? pts.count : 1);
+    err->file[0] = '\0';
     if (pts.dim != 2) {
         st = FL_ERR_INPUT;
         snprintf(err->message, sizeof err->message, "%s: need 2D query points", path);

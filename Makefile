@@ -1,9 +1,13 @@
 # Thin wrapper over CMake. `make demo` builds and runs the main job; `make test` builds and runs
-# every test twice: a debug build, then an AddressSanitizer + UBSan build.
+# every test twice: a debug build, then an AddressSanitizer + UBSan build. `make install PREFIX=...`
+# installs the library, header, command, man page, pkg-config and CMake files (docs/install.md);
+# `make api-docs` regenerates docs/api/ from the header's doc comments; `make deb-test` builds and
+# checks the Debian packages.
+PREFIX ?= /usr/local
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE ?= cmake
 
-.PHONY: all build demo test test-debug test-asan clean
+.PHONY: all build demo test test-debug test-asan install api-docs deb-test clean
 
 all: build
 
@@ -26,6 +30,17 @@ test-asan:
 	$(CMAKE) --build build-asan -j $(JOBS)
 	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 		ctest --output-on-failure -j $(JOBS)
+
+install: build
+	DESTDIR=$(DESTDIR) $(CMAKE) --install build --prefix $(PREFIX)
+
+api-docs:
+	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=Release -DFL_TESTS=OFF >/dev/null
+	$(CMAKE) --build build --target api-docs
+
+# Builds the Debian packages (debian/) from a copy of the tree and checks them; needs debhelper.
+deb-test:
+	sh tests/install/test_deb.sh .
 
 clean:
 	rm -rf build build-debug build-asan

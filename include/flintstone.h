@@ -63,6 +63,8 @@ typedef struct fl_points {
     double *coords;
 } fl_points;
 
+/* Releases points->coords and zeroes *points; NULL, a zeroed or an already-freed struct is a
+ * no-op. */
 void fl_points_free(fl_points *points);
 
 /* A triangle mesh: `vertex_count` vertices (xyz interleaved) and `triangle_count` triangles of
@@ -74,6 +76,7 @@ typedef struct fl_mesh {
     uint32_t *tri;
 } fl_mesh;
 
+/* Releases the mesh's arrays and zeroes *mesh; NULL or a zeroed struct is a no-op. */
 void fl_mesh_free(fl_mesh *mesh);
 
 /* Planar polygons with holes. The vertices of all rings are in `xy` (vertex_count pairs).
@@ -90,6 +93,7 @@ typedef struct fl_polygon {
     size_t *polygon_start;
 } fl_polygon;
 
+/* Releases the polygon's arrays and zeroes *polygon; NULL or a zeroed struct is a no-op. */
 void fl_polygon_free(fl_polygon *polygon);
 
 /* Balls (weighted points): `count` balls, centre and weight interleaved in xyzw (4 doubles a
@@ -99,6 +103,7 @@ typedef struct fl_balls {
     double *xyzw;
 } fl_balls;
 
+/* Releases balls->xyzw and zeroes *balls; NULL or a zeroed struct is a no-op. */
 void fl_balls_free(fl_balls *balls);
 
 /* ==== predicates ========================================================================== */
@@ -236,16 +241,16 @@ fl_status fl_write_points(const char *path, const fl_points *points, fl_error *e
 fl_status fl_write_mesh(const char *path, const fl_mesh *mesh, fl_error *err);
 fl_status fl_write_polygon(const char *path, const fl_polygon *polygon, fl_error *err);
 
-/* Writes a tetrahedral mesh: `point_count` points xyz[3i..3i+2] and `tet_count` tetrahedra of 4
- * point indices each (all < point_count). By extension: .vtk (legacy ASCII unstructured grid,
- * opens in ParaView) or TetGen's .node/.ele pair (either name may be given; both files
- * "<stem>.node" and "<stem>.ele" are written, 0-based indices with "# firstnumber 0" noted).
- * Written atomically; on failure no target is changed. */
 /* Balls as text, one "x y z w" line each (.xyzw, .txt or .csv; '#' comments, an optional header
  * line, separators as for points). Read and write like points; NaN/Inf rejected. */
 fl_status fl_read_balls(const char *path, fl_balls *out, fl_error *err);
 fl_status fl_write_balls(const char *path, const fl_balls *balls, fl_error *err);
 
+/* Writes a tetrahedral mesh: `point_count` points xyz[3i..3i+2] and `tet_count` tetrahedra of 4
+ * point indices each (all < point_count). By extension: .vtk (legacy ASCII unstructured grid,
+ * opens in ParaView) or TetGen's .node/.ele pair (either name may be given; both files
+ * "<stem>.node" and "<stem>.ele" are written, 0-based indices with "# firstnumber 0" noted).
+ * Written atomically; on failure no target is changed. */
 fl_status fl_write_tets(const char *path, const double *xyz, size_t point_count,
                         const uint32_t *tet, size_t tet_count, fl_error *err);
 
@@ -322,6 +327,7 @@ typedef struct fl_mesh_report {
 fl_status fl_mesh_check(const fl_mesh *mesh, const fl_mesh_check_options *opt,
                         fl_mesh_report *report, fl_error *err);
 
+/* Releases what fl_mesh_check allocated in *report and zeroes it; NULL is a no-op. */
 void fl_mesh_report_free(fl_mesh_report *report);
 
 /* Self-intersecting triangle pairs, as counted by fl_mesh_check. */
@@ -339,6 +345,7 @@ fl_status fl_mesh_self_intersections(const fl_mesh *mesh, size_t max_pairs,
                                      fl_progress_fn progress, void *progress_user,
                                      fl_mesh_pairs *out, fl_error *err);
 
+/* Releases pairs->pairs and zeroes *pairs; NULL or a zeroed struct is a no-op. */
 void fl_mesh_pairs_free(fl_mesh_pairs *pairs);
 
 /* Welds exactly coincident vertices: out receives the distinct vertex positions (==, so -0
@@ -382,6 +389,7 @@ typedef struct fl_polygon_report {
  * On failure *report is zeroed. */
 fl_status fl_polygon_check(const fl_polygon *polygon, fl_polygon_report *report, fl_error *err);
 
+/* Releases what fl_polygon_check allocated in *report and zeroes it; NULL is a no-op. */
 void fl_polygon_report_free(fl_polygon_report *report);
 
 /* end of mesh */
@@ -494,6 +502,7 @@ fl_status fl_dt3_build(const double *xyz, size_t n, const fl_dt3_options *opt, f
  * empty). FL_OK, or FL_ERR_ALGORITHM naming the first violation. */
 fl_status fl_dt3_verify(const double *xyz, const fl_dt3 *dt, fl_error *err);
 
+/* Releases the arrays of *dt and zeroes it; NULL or a zeroed struct is a no-op. */
 void fl_dt3_free(fl_dt3 *dt);
 
 /* ---- Regular (weighted Delaunay) triangulation in 3D ----
@@ -537,6 +546,7 @@ fl_status fl_rt3_build(const double *xyzw, size_t n, const fl_rt3_options *opt, 
  * containing its centre. FL_OK or FL_ERR_ALGORITHM naming the first violation. */
 fl_status fl_rt3_verify(const double *xyzw, const fl_rt3 *rt, fl_error *err);
 
+/* Releases the arrays of *rt and zeroes it; NULL or a zeroed struct is a no-op. */
 void fl_rt3_free(fl_rt3 *rt);
 
 /* end of delaunay */
@@ -593,6 +603,7 @@ typedef struct fl_graph {
     double *params;
 } fl_graph;
 
+/* Releases the arrays of *graph and zeroes it; NULL or a zeroed struct is a no-op. */
 void fl_graph_free(fl_graph *graph);
 
 /* Builds a γ-graph of n points (dim 2: edges, dim 3: triangles). coords holds n*dim finite
@@ -885,6 +896,8 @@ typedef struct fl_hal2_options {
 fl_status fl_hal2_build(const fl_polygon *polygon, const fl_hal2_options *opt, fl_hal2 *out,
                         fl_error *err);
 
+/* Releases the polygon copy, trees and nodes of *hal and zeroes it; NULL or a zeroed struct is
+ * a no-op. */
 void fl_hal2_free(fl_hal2 *hal);
 
 /* The level-`level` approximation (§7.2.2): every ring reduced to its tree's vertices of levels
@@ -932,6 +945,7 @@ typedef struct fl_hal2_pairs {
     uint32_t *pairs;
 } fl_hal2_pairs;
 
+/* Releases pairs->pairs and zeroes *pairs; NULL or a zeroed struct is a no-op. */
 void fl_hal2_pairs_free(fl_hal2_pairs *pairs);
 
 /* Hierarchical intersection (§7.4, HAL paper §5.2): all pairs of closed edges, one of a and one
@@ -1055,9 +1069,12 @@ typedef struct fl_sweep_hits {
     double *distance;
 } fl_sweep_hits;
 
+/* Fills *out with every element at distance <= radius (>= 0) from q (dim doubles),
+ * nearest first; *out is zeroed on failure. FL_ERR_USAGE for bad arguments, FL_ERR_NOMEM. */
 fl_status fl_sweep_within(const fl_sweep *sweep, const double *q, double radius,
                           fl_sweep_hits *out, fl_error *err);
 
+/* Releases the arrays of *hits and zeroes it; NULL or a zeroed struct is a no-op. */
 void fl_sweep_hits_free(fl_sweep_hits *hits);
 
 /* end of sweep */

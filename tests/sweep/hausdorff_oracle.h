@@ -6,9 +6,18 @@
 #define HAUSDORFF_ORACLE_H
 
 #include <stdlib.h>
+#include <time.h>
 
 #include "fl_test.h"
 #include "sweep_oracle.h"
+
+/* Wall-clock seconds (C11 timespec_get). */
+static inline double hd_test_now(void)
+{
+    struct timespec ts;
+    timespec_get(&ts, TIME_UTC);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
 
 static inline double oracle_mesh_distance(const fl_mesh *m, const double *p)
 {

@@ -35,6 +35,7 @@ typedef struct hd_run {
     double deadline;       /* monotonic seconds; 0 = none */
     size_t max_samples;    /* over both directions */
     size_t samples;        /* queries so far, both directions */
+    size_t splits;         /* splits so far: the clock is read every 64 */
     int both_directions;   /* refine each direction to precision, not only the maximum */
     int keep_field;        /* record leaves for the field */
     int exhausted;         /* budget or sample cap reached */

@@ -133,6 +133,38 @@ fl_status hd_try_centroid_element(hd_run *run, hd_dir *dir, hd_simplex *s, fl_er
     return FL_OK;
 }
 
+/* Bound (1) on max over the simplex of sum_i l_i a_i + K sum_{i<j} l_i l_j (a_i = d_i^2):
+ * since sum_{i<j} l_i l_j = (1 - sum_i l_i^2) / 2 for weights summing to 1, for any real mu
+ *   Q <= sum_i (l_i (a_i - mu) - K l_i^2 / 2) + mu + K/2
+ *     <= sum_i max(0, a_i - mu)^2 / (2K) + mu + K/2
+ * (each term maximized alone over l_i >= 0; Lagrangian duality). Valid for every mu, so the
+ * rounding of the mu chosen does not matter; the water-filling mu below is the minimizer. It
+ * gives max a_i + K/3 when the a_i are equal and max a_i itself when the others are K lower:
+ * on a slope the excess vanishes once the piece is small enough. Returns the bound and mu. */
+static double mean_square_bound(const double *a, int k, double K, double *mu_out)
+{
+    double s[3] = {a[0], a[1], a[2]}, amax = fmax(fmax(a[0], a[1]), a[2]);
+    *mu_out = amax;
+    if (!(K > 0)) return amax;
+    for (int i = 0; i < k; i++) /* descending */
+        for (int j = i + 1; j < k; j++)
+            if (s[j] > s[i]) {
+                double t = s[i];
+                s[i] = s[j], s[j] = t;
+            }
+    double sum = 0, mu = amax;
+    for (int m = 1; m <= k; m++) {
+        sum += s[m - 1];
+        mu = (sum - K) / m;
+        if (m == k || s[m] <= mu) break;
+    }
+    double q = mu + K / 2;
+    for (int i = 0; i < k; i++)
+        if (a[i] > mu) q += (a[i] - mu) * (a[i] - mu) / (2 * K);
+    *mu_out = mu;
+    return fmax(q, amax);
+}
+
 double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s)
 {
     const hd_sample *c[3];
@@ -157,10 +189,11 @@ double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *
             kmax = fmax(kmax, 2 * cc - e2);
             mag += 2 * sqrt(dist2(c[i]->c, c[j]->c) * e2) + e2;
         }
-    /* (1): max_i d_i^2 + K * max sum_{i<j} l_i l_j, widened by its rounding. */
-    double weight = dir->k == 3 ? 1.0 / 3.0 : 0.25;
-    double u2 = maxd * maxd + kmax * weight;
-    u2 += 32 * HD_ULP * (maxd * maxd + mag);
+    double a[3] = {0, 0, 0};
+    for (int i = 0; i < dir->k; i++)
+        a[i] = c[i]->d * c[i]->d;
+    double mu, u2 = mean_square_bound(a, dir->k, kmax, &mu);
+    u2 += 32 * HD_ULP * (maxd * maxd + mag + fabs(mu) + kmax);
     return sqrt(u2) * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
 }
 
@@ -235,7 +268,7 @@ static fl_status finish(refine *rf, const hd_simplex *s, fl_error *err)
 static void check_budget(hd_run *run)
 {
     if (run->max_samples && run->samples >= run->max_samples) run->exhausted = 1;
-    if (run->deadline > 0 && (run->samples & 63) == 0 && hd_now() > run->deadline)
+    if (run->deadline > 0 && (++run->splits & 63) == 0 && hd_now() > run->deadline)
         run->exhausted = 1;
 }
 

@@ -4,6 +4,7 @@
 
 #include "fl_test.h"
 #include "hausdorff_oracle.h"
+#include "sweep/sweep_internal.h"
 
 /* Contains x up to the rounding slack of the certificate. */
 static int contains(const double *iv, double x)
@@ -229,7 +230,43 @@ static void test_bad_input_is_rejected(void)
     fl_mesh_free(&b);
 }
 
-FL_TEST_MAIN(FL_TEST_CASE(test_parallel_squares_are_at_their_offset),
+/* Regression (found by the lattice budget test): a nearly collinear triangle — here the
+ * bounding element of lattice points on a diagonal, collinear up to rounding — seen from a
+ * query far from it relative to its width. The face solve's denominator va + vb + vc carried
+ * rounding errors larger than the triangle's true |ab x ac|^2, so the degenerate case was
+ * missed and the "closest point" was far off: the distance must be the nearest edge's. */
+static void test_nearly_collinear_triangle_distance_is_the_edge_distance(void)
+{
+    const double a[3] = {0.3, 0.8, 0.1}, b[3] = {0.5, 1, 0.1}, c[3] = {0.4, 0.9, 0.1};
+    const double p[3] = {0.34375, 0.859375, 0};
+    double bary[3], cl[3];
+    double d = sqrt(fl_sweep_triangle_closest(p, a, b, c, bary, cl));
+    double o = (double)oracle_triangle(p, a, b, c);
+    CHECK_NEAR(d, o, 1e-12);
+    /* The same through the cursor on an 11 x 11 lattice of points: two nearby queries. */
+    fl_mesh m = oracle_mesh_alloc(121, 121);
+    for (uint32_t v = 0; v < 121; v++) {
+        m.xyz[3 * v] = (v / 11) / 10.0, m.xyz[3 * v + 1] = (v % 11) / 10.0, m.xyz[3 * v + 2] = 0.1;
+        m.tri[3 * v] = m.tri[3 * v + 1] = m.tri[3 * v + 2] = v;
+    }
+    fl_sweep *s;
+    fl_sweep_cursor *cur;
+    fl_error err;
+    CHECK_STATUS(fl_sweep_build(&m, NULL, &s, &err), FL_OK, &err);
+    CHECK_STATUS(fl_sweep_cursor_new(s, &cur, &err), FL_OK, &err);
+    const double q[2][3] = {{0.34375, 0.859375, 0}, {0.3515625, 0.8515625, 0}};
+    for (int i = 0; i < 2; i++) {
+        fl_closest r;
+        CHECK_STATUS(fl_sweep_cursor_closest(cur, q[i], 0, &r, &err), FL_OK, &err);
+        CHECK_NEAR(r.distance, oracle_mesh_distance(&m, q[i]), 1e-12);
+    }
+    fl_sweep_cursor_free(cur);
+    fl_sweep_free(s);
+    fl_mesh_free(&m);
+}
+
+FL_TEST_MAIN(FL_TEST_CASE(test_nearly_collinear_triangle_distance_is_the_edge_distance),
+             FL_TEST_CASE(test_parallel_squares_are_at_their_offset),
              FL_TEST_CASE(test_shifted_squares_reach_the_corner_distance),
              FL_TEST_CASE(test_mesh_against_itself_is_zero),
              FL_TEST_CASE(test_triangle_against_its_corners_is_the_circumradius),

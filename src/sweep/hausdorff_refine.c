@@ -15,10 +15,11 @@
  *        k_ij = 2 (c_i - c_j).(p_i - p_j) - |p_i - p_j|^2
  *      (expand x - c_i = (p_i - c_i) + (x - p_i); the cross terms pair up because
  *      sum_i l_i (x - p_i) = 0, and sum_i l_i |x - p_i|^2 = sum_{i<j} l_i l_j |p_i - p_j|^2).
- *      With K = max(0, max k_ij) and sum_{i<j} l_i l_j <= 1/3 (triangle; = (1 - sum l_i^2)/2)
- *      or 1/4 (segment): d(x, B)^2 <= max_i d_i^2 + K/3 (or K/4). For a simplex of size h
- *      the excess over max d_i is O(h^2 / d) where the c_i are close (Fig. 9's first case) —
- *      the same order as the bisector bound — and O(h |c_i - c_j| / d) across a bisector.
+ *      With K = max(0, max k_ij) and sum_{i<j} l_i l_j = (1 - sum_i l_i^2) / 2, the dual
+ *      bound of mean_square_bound() holds for every real mu (max a_i + K/3 at worst). For a
+ *      simplex of size h the excess over max d_i is O(h^2 / d) where the c_i are close (Fig.
+ *      9's first case) — the order of the bisector bound — and O(h |c_i - c_j| / d) across a
+ *      bisector.
  *  (2) Same-element bound. If all c_i lie on one element (triangle / segment) t of B, then
  *      y = sum_i l_i c_i lies on t (t is convex), so d(x, B) <= |x - y| =
  *      |sum_i l_i (p_i - c_i)| <= sum_i l_i d_i <= max_i d_i: exact at the corners. This is

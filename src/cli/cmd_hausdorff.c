@@ -29,7 +29,8 @@ static const char *usage_text =
     "                 blue = 0 to red = the Hausdorff distance\n"
     "  --json         h_ab, h_ba, hausdorff ([lower, upper] each), where, samples, seconds, ...\n"
     "\n"
-    "example: flintstone hausdorff original.off simplified.off --relative 1e-4 -o field.ply --json\n";
+    "example: flintstone hausdorff original.off simplified.off --relative 1e-4 -o field.ply "
+    "--json\n";
 
 typedef struct hausdorff_args {
     const char *a, *b;

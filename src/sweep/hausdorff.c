@@ -107,8 +107,8 @@ static void run_init(hd_run *run, const fl_hausdorff_options *o, const hd_shape 
     measure_extent(b, &run->scale, lo, hi);
     double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                        (hi[2] - lo[2]) * (hi[2] - lo[2]));
-    run->precision = o->precision > 0 ? o->precision
-                                      : (o->relative > 0 ? o->relative : 1e-3) * diag;
+    run->precision =
+        o->precision > 0 ? o->precision : (o->relative > 0 ? o->relative : 1e-3) * diag;
     /* Below this size the rounding slack of the bound (~1e-14 of the coordinates) dominates
      * any gain from splitting further. */
     run->min_edge = fmax(1e-10 * diag, 1e-10 * run->scale);
@@ -138,8 +138,7 @@ static void fill_result(const hd_run *run, const hd_dir *ab, const hd_dir *ba,
     r->precision = run->precision;
     r->reached = r->hausdorff[1] - r->hausdorff[0];
     double need = r->hausdorff[1] - r->hausdorff[0];
-    if (run->both_directions)
-        need = fmax(ab->upper - ab->lower, ba->upper - ba->lower);
+    if (run->both_directions) need = fmax(ab->upper - ab->lower, ba->upper - ba->lower);
     r->budget_exhausted = run->exhausted && need > run->precision;
 }
 
@@ -214,9 +213,8 @@ static fl_status polyline_shape(const double *p, size_t n, int closed, int dim, 
 }
 
 fl_status fl_hausdorff_polylines(const double *a, size_t na, int closed_a, const double *b,
-                                 size_t nb, int closed_b, int dim,
-                                 const fl_hausdorff_options *opt, fl_hausdorff_result *out,
-                                 fl_error *err)
+                                 size_t nb, int closed_b, int dim, const fl_hausdorff_options *opt,
+                                 fl_hausdorff_result *out, fl_error *err)
 {
     if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hausdorff: NULL result");
     memset(out, 0, sizeof *out);

@@ -32,7 +32,8 @@ fl_status hd_field_from_dir(const hd_dir *dir, fl_hausdorff_field *f, fl_error *
 static void pseudo_colour(double t, int *rgb)
 {
     t = t < 0 ? 0 : (t > 1 ? 1 : t);
-    double r = t < 0.5 ? 0 : 2 * t - 1, g = t < 0.5 ? 2 * t : 2 - 2 * t, b = t < 0.5 ? 1 - 2 * t : 0;
+    double r = t < 0.5 ? 0 : 2 * t - 1, g = t < 0.5 ? 2 * t : 2 - 2 * t,
+           b = t < 0.5 ? 1 - 2 * t : 0;
     rgb[0] = (int)lround(255 * r);
     rgb[1] = (int)lround(255 * g);
     rgb[2] = (int)lround(255 * b);

@@ -29,19 +29,19 @@ typedef struct hd_simplex {
 
 /* The limits shared by both directions. */
 typedef struct hd_run {
-    double precision;      /* absolute */
-    double scale;          /* largest |coordinate| of both shapes, for rounding slack */
-    double min_edge;       /* simplices whose longest edge is shorter are not split */
-    double deadline;       /* monotonic seconds; 0 = none */
-    size_t max_samples;    /* over both directions */
-    size_t samples;        /* queries so far, both directions */
-    size_t splits;         /* splits so far: the clock is read every 64 */
-    int both_directions;   /* refine each direction to precision, not only the maximum */
-    int keep_field;        /* record leaves for the field */
-    int exhausted;         /* budget or sample cap reached */
+    double precision;    /* absolute */
+    double scale;        /* largest |coordinate| of both shapes, for rounding slack */
+    double min_edge;     /* simplices whose longest edge is shorter are not split */
+    double deadline;     /* monotonic seconds; 0 = none */
+    size_t max_samples;  /* over both directions */
+    size_t samples;      /* queries so far, both directions */
+    size_t splits;       /* splits so far: the clock is read every 64 */
+    int both_directions; /* refine each direction to precision, not only the maximum */
+    int keep_field;      /* record leaves for the field */
+    int exhausted;       /* budget or sample cap reached */
     fl_progress_fn progress;
     void *progress_user;
-    double progress_done;  /* fraction of all initial simplices finished, both directions */
+    double progress_done; /* fraction of all initial simplices finished, both directions */
     double progress_total;
 } hd_run;
 
@@ -56,10 +56,10 @@ typedef struct hd_dir {
     uint32_t *used;          /* 1 for vertices of A used by a simplex */
     hd_simplex *simplices;   /* A's own simplices, with their initial bounds */
     size_t simplex_count;
-    fl_vec leaves;           /* hd_simplex: the final refinement (keep_field only) */
-    double lower;            /* largest measured distance (minus slack) */
-    uint32_t lower_sample;   /* where */
-    double upper;            /* max bound of the simplices finished or pending */
+    fl_vec leaves;         /* hd_simplex: the final refinement (keep_field only) */
+    double lower;          /* largest measured distance (minus slack) */
+    uint32_t lower_sample; /* where */
+    double upper;          /* max bound of the simplices finished or pending */
 } hd_dir;
 
 /* Monotonic clock in seconds. */

@@ -300,7 +300,7 @@ static fl_status split(refine *rf, const hd_simplex *s, int ei, fl_error *err)
     if (st) return st;
     hd_simplex c0 = *s, c1 = *s;
     c0.tried = c1.tried = 1; /* only A's own simplices try it: a split's corners are new */
-    c0.v[(ei + 1) % k] = m; /* keeps a, replaces b: orientation preserved */
+    c0.v[(ei + 1) % k] = m;  /* keeps a, replaces b: orientation preserved */
     c1.v[ei] = m;
     c0.upper = hd_simplex_bound(rf->run, dir, &c0);
     c1.upper = hd_simplex_bound(rf->run, dir, &c1);

@@ -74,5 +74,4 @@ static void test_hausdorff_errors_and_help(void)
 }
 
 FL_TEST_MAIN(FL_TEST_CASE(test_hausdorff_of_shifted_squares_matches_closed_form),
-             FL_TEST_CASE(test_hausdorff_of_polygons),
-             FL_TEST_CASE(test_hausdorff_errors_and_help))
+             FL_TEST_CASE(test_hausdorff_of_polygons), FL_TEST_CASE(test_hausdorff_errors_and_help))

@@ -95,7 +95,7 @@ static inline fl_mesh oracle_cube(double angle, const double *t)
         double d = ax[0] * p[0] + ax[1] * p[1] + ax[2] * p[2];
         double cr[3] = {ax[1] * p[2] - ax[2] * p[1], ax[2] * p[0] - ax[0] * p[2],
                         ax[0] * p[1] - ax[1] * p[0]};
-        for (int x = 0; x < 3; x++)  /* Rodrigues */
+        for (int x = 0; x < 3; x++) /* Rodrigues */
             m.xyz[3 * v + x] = p[x] * c + cr[x] * s + ax[x] * d * (1 - c) + t[x];
     }
     memcpy(m.tri, faces, sizeof faces);

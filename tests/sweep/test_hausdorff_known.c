@@ -107,12 +107,12 @@ static void test_triangle_against_its_corners_is_the_circumradius(void)
 static fl_mesh icosphere(int levels)
 {
     const double g = (1 + sqrt(5.0)) / 2;
-    static const uint32_t f[60] = {0, 11, 5, 0, 5,  1,  0, 1, 7, 0, 7,  10, 0, 10, 11,
-                                   1, 5,  9, 5, 11, 4,  11, 10, 2, 10, 7, 6, 7, 1, 8,
-                                   3, 9,  4, 3, 4,  2,  3, 2, 6, 3, 6,  8,  3, 8,  9,
-                                   4, 9,  5, 2, 4,  11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
-    const double v0[36] = {-1, g, 0, 1, g, 0, -1, -g, 0, 1, -g, 0, 0, -1, g, 0, 1, g,
-                           0, -1, -g, 0, 1, -g, g, 0, -1, g, 0, 1, -g, 0, -1, -g, 0, 1};
+    static const uint32_t f[60] = {0, 11, 5, 0, 5,  1,  0,  1,  7,  0,  7, 10, 0, 10, 11,
+                                   1, 5,  9, 5, 11, 4,  11, 10, 2,  10, 7, 6,  7, 1,  8,
+                                   3, 9,  4, 3, 4,  2,  3,  2,  6,  3,  6, 8,  3, 8,  9,
+                                   4, 9,  5, 2, 4,  11, 6,  2,  10, 8,  6, 7,  9, 8,  1};
+    const double v0[36] = {-1, g,  0,  1, g, 0,  -1, -g, 0,  1, -g, 0, 0,  -1, g,  0,  1, g,
+                           0,  -1, -g, 0, 1, -g, g,  0,  -1, g, 0,  1, -g, 0,  -1, -g, 0, 1};
     fl_mesh m = oracle_mesh_alloc(12, 20);
     memcpy(m.xyz, v0, sizeof v0);
     memcpy(m.tri, f, sizeof f);
@@ -127,9 +127,10 @@ static fl_mesh icosphere(int levels)
             for (int k = 0; k < 3; k++) {
                 mid[k] = (uint32_t)nv++;
                 for (int x = 0; x < 3; x++)
-                    n.xyz[3 * mid[k] + x] = 0.5 * (m.xyz[3 * c[k] + x] + m.xyz[3 * c[(k + 1) % 3] + x]);
+                    n.xyz[3 * mid[k] + x] =
+                        0.5 * (m.xyz[3 * c[k] + x] + m.xyz[3 * c[(k + 1) % 3] + x]);
             }
-            uint32_t tt[12] = {c[0], mid[0], mid[2], c[1], mid[1], mid[0],
+            uint32_t tt[12] = {c[0], mid[0], mid[2], c[1],   mid[1], mid[0],
                                c[2], mid[2], mid[1], mid[0], mid[1], mid[2]};
             memcpy(n.tri + 12 * t, tt, sizeof tt);
         }

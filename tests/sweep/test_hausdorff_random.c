@@ -134,7 +134,8 @@ static void test_time_budget_stops_in_time(void)
 
 static double tri_area(const double *xyz, const uint32_t *t)
 {
-    const double *p = xyz + 3 * (size_t)t[0], *q = xyz + 3 * (size_t)t[1], *s = xyz + 3 * (size_t)t[2];
+    const double *p = xyz + 3 * (size_t)t[0], *q = xyz + 3 * (size_t)t[1],
+                 *s = xyz + 3 * (size_t)t[2];
     double u[3], v[3];
     for (int x = 0; x < 3; x++)
         u[x] = q[x] - p[x], v[x] = s[x] - p[x];
@@ -199,8 +200,8 @@ static void test_field_partitions_the_mesh_with_exact_distances(void)
 }
 
 /* Dense directed distance between polylines (3D layout, n points, closed flag). */
-static double dense_polyline(const double *a, size_t na, int ca, const double *b, size_t nb,
-                             int cb, int steps)
+static double dense_polyline(const double *a, size_t na, int ca, const double *b, size_t nb, int cb,
+                             int steps)
 {
     double best = 0;
     for (size_t i = 0; i < (ca ? na : na - 1); i++)

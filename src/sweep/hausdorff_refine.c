@@ -309,6 +309,15 @@ static fl_status split(refine *rf, const hd_simplex *s, int ei, fl_error *err)
     return FL_OK;
 }
 
+/* Whether a corner of s lies on B up to the precision. */
+static int near_b(const refine *rf, const hd_simplex *s)
+{
+    const hd_sample *smp = rf->dir->samples.data;
+    for (int i = 0; i < rf->dir->k; i++)
+        if (smp[s->v[i]].d <= rf->run->precision) return 1;
+    return 0;
+}
+
 /* Refines one simplex of A best-first until its pieces are all below the threshold. The
  * pieces stay inside it, so consecutive queries are close (coherent cursor). */
 static fl_status refine_simplex(refine *rf, const hd_simplex *s0, fl_error *err)
@@ -325,7 +334,10 @@ static fl_status refine_simplex(refine *rf, const hd_simplex *s0, fl_error *err)
             break;
         }
         hd_simplex s = heap_pop(&rf->heap);
-        if (!s.tried) { /* cheaper than a split when it closes the simplex (self-distance) */
+        /* Cheaper than a split when it closes the simplex: where A lies on B (a mesh against
+         * itself or a shared part), the corners' closest points are vertices or edge points
+         * of B reported on arbitrary neighbouring triangles. Elsewhere (2) rarely needs it. */
+        if (!s.tried && near_b(rf, &s)) {
             st = hd_try_centroid_element(rf->run, rf->dir, &s, err);
             if (st == FL_OK && heap_push(&rf->heap, &s))
                 st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");

@@ -1080,6 +1080,95 @@ void fl_sweep_hits_free(fl_sweep_hits *hits);
 /* end of sweep */
 
 
+/* ==== hausdorff =========================================================================== */
+/* (section owned by src/sweep/hausdorff*.c; docs/hausdorff.md)
+ *
+ * Certified Hausdorff distance between two triangle meshes or two polylines (Guéziec 2001,
+ * §6), on top of the Meshsweeper closest-point cursor. The directed distance h(A,B) is the
+ * largest distance from a point of A (any point of its triangles / segments, not only the
+ * vertices) to B; the Hausdorff distance is max(h(A,B), h(B,A)). Each is returned as an
+ * interval [lower, upper] that contains the true value: `lower` is a distance actually measured
+ * from a sample point of the shape (reported in `where`), `upper` is proven for every point of
+ * every triangle (docs/hausdorff.md has the proof). Both are widened by the rounding slack of
+ * the arithmetic (about 1e-14 of the largest coordinate). */
+
+/* Options; all zero is the default (precision 1e-3 of the bounding-box diagonal, no budget).
+ *  - precision > 0: stop once upper - lower <= precision (absolute length); otherwise
+ *    relative > 0 asks for relative * (diagonal of the bounding box of both shapes); both 0
+ *    means relative = 1e-3. Precisions below ~1e-12 of the coordinates cannot be reached
+ *    (rounding slack): the call then stops refining triangles smaller than that and reports
+ *    the precision it did reach.
+ *  - budget_seconds > 0: stop refining after about that long and return the best intervals
+ *    found so far (still certified; budget_exhausted = 1).
+ *  - max_samples > 0: the same, after that many closest-point queries (0 = 100 million).
+ *  - both_directions = 0 refines only as far as the symmetric distance needs (the direction
+ *    that cannot reach the maximum keeps a wider but still certified interval, §6 "decide
+ *    early which direction dominates"); nonzero refines each directed interval to precision.
+ *  - keep_field nonzero fills the result's field_ab / field_ba (the refined sample meshes). */
+typedef struct fl_hausdorff_options {
+    double precision;
+    double relative;
+    double budget_seconds;
+    size_t max_samples;
+    int both_directions;
+    int keep_field;
+    fl_progress_fn progress; /* may be NULL; stage "hausdorff" */
+    void *progress_user;
+} fl_hausdorff_options;
+
+/* A distance field over one shape: the refined sample mesh (every sample is a vertex; for
+ * meshes the triangles are the leaves of the refinement, which may have T-junctions; for
+ * polylines triangle_count = 0) and distance[i] = the distance from vertex i to the other
+ * shape (exact up to rounding). */
+typedef struct fl_hausdorff_field {
+    fl_mesh mesh;
+    double *distance;
+} fl_hausdorff_field;
+
+/* The answer. h_ab = h(A,B) (points of A, distances to B), h_ba = h(B,A), hausdorff = the
+ * symmetric distance, each [lower, upper]. where[0] is the sample point realizing
+ * hausdorff[0] and where[1] its closest point on the other shape; where_on_b = 1 when
+ * where[0] lies on B (h_ba dominates). samples counts closest-point queries (vertices
+ * included); reached = hausdorff[1] - hausdorff[0]; precision = the absolute precision asked
+ * for. budget_exhausted = 1 when the time or sample budget stopped the refinement before
+ * reaching the precision. For 2D polylines z = 0. Free with fl_hausdorff_result_free. */
+typedef struct fl_hausdorff_result {
+    double h_ab[2], h_ba[2], hausdorff[2];
+    double where[2][3];
+    int where_on_b;
+    size_t samples;
+    double precision, reached;
+    int budget_exhausted;
+    fl_hausdorff_field field_ab, field_ba; /* with keep_field; otherwise zero */
+} fl_hausdorff_result;
+
+/* Hausdorff distance between two triangle meshes (same input rules as fl_sweep_build: any
+ * topology; vertices used by no triangle are ignored). opt may be NULL. *out is zeroed first.
+ * FL_ERR_USAGE for NULL arguments or negative options, FL_ERR_INPUT for bad meshes,
+ * FL_ERR_ALGORITHM "cancelled" when the progress callback asks to stop, FL_ERR_NOMEM. */
+fl_status fl_hausdorff_meshes(const fl_mesh *a, const fl_mesh *b, const fl_hausdorff_options *opt,
+                              fl_hausdorff_result *out, fl_error *err);
+
+/* The same between two polylines of dimension dim (2 or 3): na points in `a` (interleaved,
+ * closed_a nonzero joins the last to the first) and nb in `b`, each >= 2 points, as in
+ * fl_sweep_polyline_build. */
+fl_status fl_hausdorff_polylines(const double *a, size_t na, int closed_a, const double *b,
+                                 size_t nb, int closed_b, int dim,
+                                 const fl_hausdorff_options *opt, fl_hausdorff_result *out,
+                                 fl_error *err);
+
+/* Releases the fields of a result; a zeroed result is a no-op. */
+void fl_hausdorff_result_free(fl_hausdorff_result *result);
+
+/* Writes a field as an ASCII PLY with per-vertex `quality` (the distance) and colours from
+ * blue (distance <= lo) through green to red (distance >= hi), as Guéziec's Fig. 10; lo = hi
+ * = 0 uses the field's own range. Atomic (temporary file renamed). FL_ERR_IO. */
+fl_status fl_hausdorff_write_field_ply(const char *path, const fl_hausdorff_field *field,
+                                       double lo, double hi, fl_error *err);
+
+/* end of hausdorff */
+
+
 #ifdef __cplusplus
 }
 #endif

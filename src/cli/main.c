@@ -20,6 +20,7 @@ static const cli_command commands[] = {
     {"inside", "point inclusion in a polygon through its flintstone tree", cmd_inside},
     {"intersect", "do two polygons' boundaries intersect (flintstone trees)", cmd_intersect},
     {"closest", "closest points on a mesh or polyline (Meshsweeper hierarchy)", cmd_closest},
+    {"hausdorff", "certified Hausdorff distance between two meshes or polylines", cmd_hausdorff},
     {"version", "print the version", cmd_version},
 };
 

@@ -98,7 +98,12 @@ double fl_sweep_triangle_closest(const double *p, const double *a, const double 
      * goes there: its face solve would divide by (nearly) zero, and its face lies within
      * 1e-12 |ab| of its edges. Between that and well-shaped triangles the face solve loses
      * accuracy like 1/sin^2 (docs/sweep.md). */
-    if (!(denom > 1e-24 * ab2 * ac2) || va < 0 || vb < 0 || vc < 0)
+    double n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
+                   ab[0] * ac[1] - ab[1] * ac[0]};
+    /* The degeneracy test uses |ab x ac|^2 itself: va + vb + vc carries rounding errors of the
+     * size of |ap|^2 |ab| |ac| u, so for a query far from a (nearly) collinear triangle it can
+     * look well-conditioned and the face solve returns a point far off the triangle. */
+    if (!(dot3(n, n) > 1e-24 * ab2 * ac2) || va < 0 || vb < 0 || vc < 0)
         return triangle_edges_closest(p, v, bary, closest);
     double s = vb / denom, t = vc / denom;
     set_bary(bary, 1 - s - t, s, t);

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages that building and testing flintstone need, if any are missing.
-# The library itself needs only libc and libm; the tests use GMP as an independent exact oracle.
+# The library itself needs only libc and libm; the command writes PNG through libpng and the
+# tests use GMP as an independent exact oracle.
 set -euo pipefail
-packages=(gcc make cmake libgmp-dev)
+packages=(gcc make cmake libgmp-dev libpng-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -19,6 +19,8 @@ static const cli_command commands[] = {
     {"inside", "point inclusion in a polygon through its flintstone tree", cmd_inside},
     {"intersect", "do two polygons' boundaries intersect (flintstone trees)", cmd_intersect},
     {"closest", "closest points on a mesh or polyline (Meshsweeper hierarchy)", cmd_closest},
+    {"render", "pictures: meshes, balls, 3D points to PNG; 2D points and polygons to SVG",
+     cmd_render},
     {"version", "print the version", cmd_version},
 };
 

@@ -87,7 +87,8 @@ static int parse_value(render_args *a, const char *o, const char *v)
 {
     double w, h;
     if (!strcmp(o, "--view")) {
-        if (parse_pair(v, ',', &a->azimuth, &a->elevation)) return cli_fail(1, "render: --view takes A,E in degrees");
+        if (parse_pair(v, ',', &a->azimuth, &a->elevation))
+            return cli_fail(1, "render: --view takes A,E in degrees");
     } else if (!strcmp(o, "--size")) {
         if (parse_pair(v, 'x', &w, &h) || !(w >= 1 && w <= 16384 && h >= 1 && h <= 16384) ||
             w != floor(w) || h != floor(h))
@@ -105,10 +106,14 @@ static int parse_value(render_args *a, const char *o, const char *v)
             return cli_fail(1, "render: --range takes MIN,MAX with MIN < MAX");
         a->has_range = 1;
     } else if (!strcmp(o, "--colormap")) {
-        if (!strcmp(v, "coolwarm")) a->colormap = FL_RENDER_COOLWARM;
-        else if (!strcmp(v, "viridis")) a->colormap = FL_RENDER_VIRIDIS;
-        else if (!strcmp(v, "gray")) a->colormap = FL_RENDER_GRAY;
-        else return cli_fail(1, "render: --colormap is coolwarm, viridis or gray");
+        if (!strcmp(v, "coolwarm"))
+            a->colormap = FL_RENDER_COOLWARM;
+        else if (!strcmp(v, "viridis"))
+            a->colormap = FL_RENDER_VIRIDIS;
+        else if (!strcmp(v, "gray"))
+            a->colormap = FL_RENDER_GRAY;
+        else
+            return cli_fail(1, "render: --colormap is coolwarm, viridis or gray");
     } else if (!strcmp(o, "--background")) {
         if (parse_color(v, a->background))
             return cli_fail(1, "render: --background takes #rrggbb, #rrggbbaa or transparent");
@@ -125,12 +130,15 @@ static int parse_value(render_args *a, const char *o, const char *v)
 
 static int parse(int argc, char **argv, cli_common *c, render_args *a)
 {
-    static const char *valued[] = {"--view", "--size", "--fov", "--stripes", "--range",
-                                   "--colormap", "--background", "--radius", "--field", "--graph"};
-    struct { const char *name; int *flag; } flags[] = {
-        {"--ortho", &a->ortho}, {"--aa", &a->aa}, {"--flat", &a->flat},
-        {"--wireframe", &a->wireframe}, {"--zebra", &a->zebra}, {"--closed", &a->closed},
-        {"--polygon", &a->polygon}};
+    static const char *valued[] = {"--view",  "--size",     "--fov",        "--stripes",
+                                   "--range", "--colormap", "--background", "--radius",
+                                   "--field", "--graph"};
+    struct {
+        const char *name;
+        int *flag;
+    } flags[] = {{"--ortho", &a->ortho},         {"--aa", &a->aa},       {"--flat", &a->flat},
+                 {"--wireframe", &a->wireframe}, {"--zebra", &a->zebra}, {"--closed", &a->closed},
+                 {"--polygon", &a->polygon}};
     for (int i = 1; i < argc; i++) {
         int r = cli_common_option(c, argc, argv, &i);
         if (r < 0) return 1;
@@ -294,8 +302,7 @@ static fl_status svg_points(const render_args *a, fl_svg *svg, const fl_points *
                                   err);
         fl_graph_free(&g);
     }
-    if (st == FL_OK && a->closed)
-        st = fl_svg_add_polyline(svg, p->coords, p->count, 1, NULL, err);
+    if (st == FL_OK && a->closed) st = fl_svg_add_polyline(svg, p->coords, p->count, 1, NULL, err);
     fl_svg_style dots = {.fill = "#b03a2e", .point_radius = 3};
     if (st == FL_OK) st = fl_svg_add_points(svg, p->coords, p->count, &dots, err);
     return st;
@@ -365,8 +372,8 @@ static fl_status check_output(const char *out, int svg, fl_error *err)
                    svg ? "SVG" : "PNG", svg ? "svg" : "png");
 }
 
-static fl_status run(const render_args *a, const cli_common *c, render_result *res,
-                     char *out, size_t out_size, fl_error *err)
+static fl_status run(const render_args *a, const cli_common *c, render_result *res, char *out,
+                     size_t out_size, fl_error *err)
 {
     static const char *const poly_ext[] = {"geojson", "json", NULL};
     fl_points p = {0};

@@ -41,8 +41,8 @@ static int encode(FILE *fp, const fl_image *image, png_failure *f)
         return -1;
     }
     png_init_io(png, fp);
-    png_set_IHDR(png, info, image->width, image->height, 8, PNG_COLOR_TYPE_RGBA,
-                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_IHDR(png, info, image->width, image->height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_write_info(png, info);
     for (uint32_t y = 0; y < image->height; y++)
         png_write_row(png, image->rgba + (size_t)y * image->width * 4);

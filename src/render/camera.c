@@ -46,8 +46,8 @@ static void view_basis(fl_render_camera *cam, double azimuth, double elevation)
     }
 }
 
-int fl_render_fit_camera(const fl_render_options *opt, const double bbox[6], uint32_t w,
-                         uint32_t h, fl_render_camera *cam)
+int fl_render_fit_camera(const fl_render_options *opt, const double bbox[6], uint32_t w, uint32_t h,
+                         fl_render_camera *cam)
 {
     view_basis(cam, opt->azimuth, opt->elevation);
     double radius2 = 0;

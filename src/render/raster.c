@@ -11,7 +11,7 @@ typedef struct screen_tri {
     double x[3], y[3]; /* sample-pixel positions */
     double inv_w[3];   /* 1/w per vertex (1 for orthographic) */
     double nearness[3];
-    double area;       /* twice the signed screen area */
+    double area;        /* twice the signed screen area */
     double edge_len[3]; /* length of the edge opposite each vertex, in samples */
 } screen_tri;
 
@@ -140,8 +140,9 @@ fl_status fl_render_vertex_normals(const fl_mesh *mesh, double *normals, fl_erro
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_render_vertex_normals: NULL argument");
     for (size_t i = 0; i < 3 * mesh->triangle_count; i++)
         if (mesh->tri[i] >= mesh->vertex_count)
-            return fl_fail(err, FL_ERR_INPUT, NULL, -1, "render: triangle %zu uses vertex %u of %zu",
-                           i / 3, mesh->tri[i], mesh->vertex_count);
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                           "render: triangle %zu uses vertex %u of %zu", i / 3, mesh->tri[i],
+                           mesh->vertex_count);
     for (size_t i = 0; i < 3 * mesh->vertex_count; i++)
         normals[i] = 0;
     render_mesh m = {.xyz = mesh->xyz};

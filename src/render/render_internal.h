@@ -43,8 +43,8 @@ typedef struct render_target {
 
 /* Fits cam to the bbox (min xyz, max xyz) for an image of w x h pixels (camera.c). Returns 0
  * when the bbox has no extent. */
-int fl_render_fit_camera(const fl_render_options *opt, const double bbox[6], uint32_t w,
-                         uint32_t h, fl_render_camera *cam);
+int fl_render_fit_camera(const fl_render_options *opt, const double bbox[6], uint32_t w, uint32_t h,
+                         fl_render_camera *cam);
 /* Camera-space coordinates of p: along right, up, toward, relative to the centre. */
 void fl_render_camera_space(const fl_render_camera *cam, const double p[3], double out[3]);
 

@@ -30,8 +30,8 @@ fl_status fl_render_new(const fl_render_options *opt, fl_render **out, fl_error 
         o.height = 600;
     }
     if (o.width == 0 || o.height == 0 || o.width > MAX_SIDE || o.height > MAX_SIDE)
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "render: size %ux%u is not in 1..%u",
-                       o.width, o.height, MAX_SIDE);
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "render: size %ux%u is not in 1..%u", o.width,
+                       o.height, MAX_SIDE);
     if (o.fov == 0) o.fov = 30;
     if (!(o.fov > 0 && o.fov < 170))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "render: field of view must be in (0, 170)");
@@ -97,8 +97,8 @@ static void vertex_colors(const fl_mesh *mesh, const fl_render_mesh_style *st, u
     for (size_t i = 0; i < mesh->vertex_count; i++) {
         uint8_t c[4];
         if (st->scalars)
-            fl_render_colormap_rgba(st->colormap,
-                                    hi > lo ? (st->scalars[i] - lo) / (hi - lo) : 0.5, c);
+            fl_render_colormap_rgba(st->colormap, hi > lo ? (st->scalars[i] - lo) / (hi - lo) : 0.5,
+                                    c);
         else
             memcpy(c, base, 4);
         memcpy(rgb + 3 * i, c, 3);
@@ -184,8 +184,8 @@ fl_status fl_render_add_balls(fl_render *render, const fl_balls *balls, const ui
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_render_add_balls: NULL argument");
     if (balls->count > SIZE_MAX / 4 || !all_finite(balls->xyzw, 4 * balls->count))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "render: a ball has a non-finite value");
-    return push_spheres(render, balls->xyzw, balls->count, 4, 0,
-                        color ? color : default_ball_color, err);
+    return push_spheres(render, balls->xyzw, balls->count, 4, 0, color ? color : default_ball_color,
+                        err);
 }
 
 fl_status fl_render_add_points(fl_render *render, const double *xyz, size_t n, double radius,
@@ -289,8 +289,9 @@ fl_status fl_render_finish(fl_render *render, fl_image *image, fl_render_stats *
     double bbox[6];
     render_target t;
     if (!scene_bbox(render, bbox))
-        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "render: nothing to draw (no triangles, "
-                                                    "balls or points)");
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                       "render: nothing to draw (no triangles, "
+                       "balls or points)");
     fl_status st = target_init(&t, render, err);
     if (st == FL_OK && !fl_render_fit_camera(&render->opt, bbox, t.w, t.h, &t.cam))
         st = fl_fail(err, FL_ERR_INPUT, NULL, -1, "render: the scene has no extent");
@@ -302,8 +303,8 @@ fl_status fl_render_finish(fl_render *render, fl_image *image, fl_render_stats *
         /* A key light above and to the left of the viewer: shapes read best lit from there. */
         for (int k = 0; k < 3; k++)
             t.light[k] = -0.35 * t.cam.right[k] + 0.55 * t.cam.up[k] + 0.76 * t.cam.toward[k];
-        double l = sqrt(t.light[0] * t.light[0] + t.light[1] * t.light[1] +
-                        t.light[2] * t.light[2]);
+        double l =
+            sqrt(t.light[0] * t.light[0] + t.light[1] * t.light[1] + t.light[2] * t.light[2]);
         for (int k = 0; k < 3; k++)
             t.light[k] /= l;
         const render_mesh *m = render->meshes.data;

@@ -71,8 +71,9 @@ static const uint8_t gray[2][3] = {{0, 0, 0}, {255, 255, 255}};
 
 void fl_render_colormap_rgba(fl_render_colormap map, double t, uint8_t rgba[4])
 {
-    const uint8_t(*table)[3] = map == FL_RENDER_VIRIDIS ? viridis : map == FL_RENDER_GRAY ? gray
-                                                                                           : coolwarm;
+    const uint8_t(*table)[3] = map == FL_RENDER_VIRIDIS ? viridis
+                               : map == FL_RENDER_GRAY  ? gray
+                                                        : coolwarm;
     int n = map == FL_RENDER_GRAY ? 2 : 5;
     rgba[3] = 255;
     if (isnan(t)) {

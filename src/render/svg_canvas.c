@@ -179,8 +179,8 @@ fl_status fl_svg_add_edges(fl_svg *svg, const double *xy, size_t n, const uint32
     for (size_t e = 0; e < 2 * edge_count; e++) {
         if (edges[e] >= n) {
             free(seg);
-            return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: edge %zu uses point %u of %zu",
-                           e / 2, edges[e], n);
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: edge %zu uses point %u of %zu", e / 2,
+                           edges[e], n);
         }
         seg[2 * e] = xy[2 * (size_t)edges[e]];
         seg[2 * e + 1] = xy[2 * (size_t)edges[e] + 1];
@@ -284,8 +284,9 @@ static double flen(const svg_frame *f, double r)
 static void style_attrs(FILE *fp, const svg_item *it, int stroked)
 {
     if (stroked)
-        fprintf(fp, " stroke=\"%s\" stroke-width=\"%.4g\" stroke-linejoin=\"round\" "
-                    "stroke-linecap=\"round\"",
+        fprintf(fp,
+                " stroke=\"%s\" stroke-width=\"%.4g\" stroke-linejoin=\"round\" "
+                "stroke-linecap=\"round\"",
                 it->stroke, it->stroke_width);
     else
         fputs(" stroke=\"none\"", fp);

@@ -28,9 +28,9 @@ static inline size_t hull2(const double (*p)[2], size_t n, size_t *hull)
     for (size_t i = 0; i < n; i++)
         idx[i] = i;
     for (size_t i = 1; i < n; i++) /* insertion sort by (x, y) */
-        for (size_t j = i; j > 0 && (p[idx[j]][0] < p[idx[j - 1]][0] ||
-                                     (p[idx[j]][0] == p[idx[j - 1]][0] &&
-                                      p[idx[j]][1] < p[idx[j - 1]][1]));
+        for (size_t j = i;
+             j > 0 && (p[idx[j]][0] < p[idx[j - 1]][0] ||
+                       (p[idx[j]][0] == p[idx[j - 1]][0] && p[idx[j]][1] < p[idx[j - 1]][1]));
              j--) {
             size_t t = idx[j];
             idx[j] = idx[j - 1];

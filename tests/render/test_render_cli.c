@@ -56,8 +56,12 @@ static void test_png_roundtrips_the_library_pixels(void)
     CHECK(decode_png("render_cube.png", &png) == 0);
     /* The same scene in-process. */
     static const uint8_t bg[4] = {0x20, 0x30, 0x40, 0x80};
-    fl_render_options opt = {.width = 160, .height = 120, .azimuth = 30, .elevation = 20,
-                             .supersample = 2, .background = bg};
+    fl_render_options opt = {.width = 160,
+                             .height = 120,
+                             .azimuth = 30,
+                             .elevation = 20,
+                             .supersample = 2,
+                             .background = bg};
     fl_render_mesh_style st = {.wireframe = 1};
     fl_mesh m = cube_mesh();
     fl_render *rd = NULL;

@@ -22,8 +22,8 @@ static fl_status render_mesh(const fl_render_options *opt, const fl_mesh *m,
  * corners, so only centres within rounding distance of the silhouette may go either way). */
 static void check_cube_silhouette(double az, double el, int ortho)
 {
-    fl_render_options opt = {.width = 320, .height = 240, .azimuth = az, .elevation = el,
-                             .orthographic = ortho};
+    fl_render_options opt = {
+        .width = 320, .height = 240, .azimuth = az, .elevation = el, .orthographic = ortho};
     fl_mesh m = cube_mesh();
     fl_image img = {0};
     fl_render_stats s;
@@ -120,8 +120,8 @@ static void test_sphere_silhouette_is_pi_r_squared(void)
     for (int ortho = 0; ortho < 2; ortho++) {
         double ball[4] = {0.3, -0.2, 0.1, 2.25};
         fl_balls b = {1, ball};
-        fl_render_options opt = {.width = 300, .height = 300, .orthographic = ortho,
-                                 .azimuth = 40, .elevation = 25};
+        fl_render_options opt = {
+            .width = 300, .height = 300, .orthographic = ortho, .azimuth = 40, .elevation = 25};
         fl_render *r = NULL;
         fl_error err;
         fl_image img = {0};
@@ -130,9 +130,8 @@ static void test_sphere_silhouette_is_pi_r_squared(void)
         CHECK_EQ_INT(fl_render_add_balls(r, &b, NULL, &err), FL_OK);
         CHECK_EQ_INT(fl_render_finish(r, &img, &s, &err), FL_OK);
         double rr = 1.5, R = ortho ? s.camera.scale * rr
-                                    : s.camera.scale * rr / sqrt(s.camera.distance *
-                                                                     s.camera.distance -
-                                                                 rr * rr);
+                                   : s.camera.scale * rr /
+                                         sqrt(s.camera.distance * s.camera.distance - rr * rr);
         double lo = PI * pow(R - SQRT1_2, 2), hi = PI * pow(R + SQRT1_2, 2);
         CHECK_MSG(s.pixels_covered >= lo && s.pixels_covered <= hi,
                   "ortho %d: R %.3f px, covered %zu, expected %.0f..%.0f", ortho, R,

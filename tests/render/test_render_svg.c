@@ -75,12 +75,12 @@ static void test_canvas_writes_every_item_well_formed(void)
     double ctrl[14] = {0, 0, 0.2, 0.5, 0.8, 0.5, 1, 0, 1.2, -0.5, 1.5, -0.5, 2, 0};
     double d0[3] = {0, 0, 1}, d1[3] = {1.2, 0, 0.8};
     fl_svg_style red = {.stroke = "#b03a2e", .fill = "none", .stroke_width = 1, .opacity = 0.5};
-    CHECK_EQ_INT(fl_svg_add_points(svg, pts, 5, NULL, &err), FL_OK);       /* 5 circles */
-    CHECK_EQ_INT(fl_svg_add_polyline(svg, pts, 4, 1, &red, &err), FL_OK);  /* 1 path */
+    CHECK_EQ_INT(fl_svg_add_points(svg, pts, 5, NULL, &err), FL_OK);          /* 5 circles */
+    CHECK_EQ_INT(fl_svg_add_polyline(svg, pts, 4, 1, &red, &err), FL_OK);     /* 1 path */
     CHECK_EQ_INT(fl_svg_add_edges(svg, pts, 5, edges, 3, NULL, &err), FL_OK); /* 1 path */
-    CHECK_EQ_INT(fl_svg_add_disc(svg, 3, 3, 0.5, NULL, &err), FL_OK);      /* 1 circle */
-    CHECK_EQ_INT(fl_svg_add_lens(svg, d0, d1, NULL, &err), FL_OK);         /* 1 path */
-    CHECK_EQ_INT(fl_svg_add_bezier(svg, ctrl, 2, NULL, &err), FL_OK);      /* 1 path */
+    CHECK_EQ_INT(fl_svg_add_disc(svg, 3, 3, 0.5, NULL, &err), FL_OK);         /* 1 circle */
+    CHECK_EQ_INT(fl_svg_add_lens(svg, d0, d1, NULL, &err), FL_OK);            /* 1 path */
+    CHECK_EQ_INT(fl_svg_add_bezier(svg, ctrl, 2, NULL, &err), FL_OK);         /* 1 path */
     /* A square with a square hole plus a triangle: two polygons, three rings. */
     double xy[22] = {0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 1, 3, 3, 3, 3, 1, 5, 0, 6, 0, 5, 1};
     size_t rs[4] = {0, 4, 8, 11}, ps[3] = {0, 2, 3};
@@ -117,17 +117,16 @@ static void test_lens_arcs_meet_on_both_circles(void)
     double c[2][3];
     const char *p = s ? strstr(s, "<circle") : NULL;
     for (int k = 0; k < 2 && p; k++) {
-        CHECK_EQ_INT(sscanf(p, "<circle cx=\"%lf\" cy=\"%lf\" r=\"%lf\"", &c[k][0], &c[k][1],
-                            &c[k][2]),
-                     3);
+        CHECK_EQ_INT(
+            sscanf(p, "<circle cx=\"%lf\" cy=\"%lf\" r=\"%lf\"", &c[k][0], &c[k][1], &c[k][2]), 3);
         p = strstr(p + 1, "<circle");
     }
     const char *d = s ? strstr(s, "<path d=\"") : NULL;
     double px, py, r1a, r1b, qx, qy, r0a, r0b, ex, ey;
     int f1, s1, f0, s0, rot1, rot0;
     CHECK(d && sscanf(d, "<path d=\"M%lf %lf A%lf %lf %d %d %d %lf %lf A%lf %lf %d %d %d %lf %lf",
-                      &px, &py, &r1a, &r1b, &rot1, &f1, &s1, &qx, &qy, &r0a, &r0b, &rot0, &f0,
-                      &s0, &ex, &ey) == 16);
+                      &px, &py, &r1a, &r1b, &rot1, &f1, &s1, &qx, &qy, &r0a, &r0b, &rot0, &f0, &s0,
+                      &ex, &ey) == 16);
     if (d) {
         double pts[2][2] = {{px, py}, {qx, qy}};
         for (int i = 0; i < 2; i++)
@@ -151,7 +150,7 @@ static void test_lens_of_nested_or_disjoint_discs(void)
     double big[3] = {0, 0, 2}, small[3] = {0.5, 0, 0.5}, away[3] = {10, 0, 1};
     CHECK_EQ_INT(fl_svg_add_lens(svg, big, small, NULL, &err), FL_OK); /* the small disc */
     CHECK_EQ_INT(fl_svg_element_count(svg), 1);
-    CHECK_EQ_INT(fl_svg_add_lens(svg, big, away, NULL, &err), FL_OK);  /* empty */
+    CHECK_EQ_INT(fl_svg_add_lens(svg, big, away, NULL, &err), FL_OK); /* empty */
     CHECK_EQ_INT(fl_svg_element_count(svg), 1);
     CHECK_EQ_INT(fl_svg_write(svg, "render_nested.svg", &err), FL_OK);
     char *s = slurp("render_nested.svg");

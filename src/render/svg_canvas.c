@@ -320,7 +320,9 @@ static void write_polygon(FILE *fp, const svg_frame *f, const svg_item *it)
  * vector from c0 to c1 at distance d, the chord through the two intersection points crosses
  * the centre line at a = (d^2 + r0^2 - r1^2) / (2d) from c0. The boundary is circle 1's arc
  * on c0's side (the larger arc iff a > d) and circle 0's arc on c1's side (larger iff a < 0);
- * both run counter-clockwise in data coordinates, clockwise (sweep 1) once y is flipped.
+ * both run counter-clockwise in data coordinates. The y flip into the picture's y-down frame
+ * keeps the picture unmirrored, so they still look counter-clockwise there, which is SVG's
+ * negative-angle direction: sweep flag 0.
  * Returns the number of elements written (0 for disjoint discs). */
 static int write_lens(FILE *fp, const svg_frame *f, const svg_item *it)
 {
@@ -339,7 +341,7 @@ static int write_lens(FILE *fp, const svg_frame *f, const svg_item *it)
     double h = sqrt(fmax(0, d0[2] * d0[2] - a * a));
     double ux = dx / d, uy = dy / d, mx = d0[0] + a * ux, my = d0[1] + a * uy;
     double p[2] = {mx - h * uy, my + h * ux}, q[2] = {mx + h * uy, my - h * ux};
-    fprintf(fp, "<path d=\"M%.7g %.7g A%.7g %.7g 0 %d 1 %.7g %.7g A%.7g %.7g 0 %d 1 %.7g %.7g Z\"",
+    fprintf(fp, "<path d=\"M%.7g %.7g A%.7g %.7g 0 %d 0 %.7g %.7g A%.7g %.7g 0 %d 0 %.7g %.7g Z\"",
             fx(f, p[0]), fy(f, p[1]), flen(f, d1[2]), flen(f, d1[2]), a > d, fx(f, q[0]),
             fy(f, q[1]), flen(f, d0[2]), flen(f, d0[2]), a < 0, fx(f, p[0]), fy(f, p[1]));
     style_attrs(fp, it, 1);

@@ -1101,11 +1101,13 @@ void fl_render_colormap_rgba(fl_render_colormap map, double t, uint8_t rgba[4]);
  * from +x, z up), perspective with a 30 degree vertical field of view, no supersampling, opaque
  * white background. */
 typedef struct fl_render_options {
-    uint32_t width, height;    /* pixels, 1..16384 each; 0 = 800 x 600 */
+    uint32_t width, height;    /* pixels, 1..16384 each and at most 2^26 samples in all
+                                * (width * height * supersample^2); 0 = 800 x 600 */
     double azimuth, elevation; /* degrees: the camera sits in direction (cos e cos a, cos e sin a,
                                 * sin e) from the centre of the scene */
     int orthographic;          /* nonzero: parallel projection */
-    double fov;                /* perspective: vertical field of view in degrees, (0, 170); 0 = 30 */
+    double fov;                /* perspective: vertical field of view in degrees, (0, 170);
+                                * 0 = 30 */
     int supersample;           /* 0 or 1: one sample a pixel; 2: 2x2 samples averaged */
     double margin;             /* fraction of the image left free on each side; 0 = 0.05 */
     const uint8_t *background; /* 4 bytes RGBA, or NULL for opaque white */

@@ -38,6 +38,12 @@ fl_status fl_render_new(const fl_render_options *opt, fl_render **out, fl_error 
     if (o.supersample == 0) o.supersample = 1;
     if (o.supersample != 1 && o.supersample != 2)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "render: supersample must be 1 or 2");
+    /* The sample buffer costs 11 bytes a sample; 2^26 samples (8192^2, or 4096^2 at 2x2) keep
+     * it under a gigabyte. */
+    if ((double)o.width * o.height * o.supersample * o.supersample > (double)(1u << 26))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1,
+                       "render: %ux%u with %dx%d samples a pixel is more than 2^26 samples",
+                       o.width, o.height, o.supersample, o.supersample);
     if (o.margin == 0) o.margin = 0.05;
     if (!(o.margin > 0 && o.margin < 0.45))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "render: margin must be in (0, 0.45)");

@@ -287,6 +287,9 @@ static void test_bad_input_is_reported_not_drawn(void)
     CHECK(r == NULL);
     bad.width = 20000;
     CHECK_EQ_INT(fl_render_new(&bad, &r, &err), FL_ERR_USAGE);
+    bad.width = bad.height = 8192;
+    bad.supersample = 2; /* 2^28 samples */
+    CHECK_EQ_INT(fl_render_new(&bad, &r, &err), FL_ERR_USAGE);
     CHECK_EQ_INT(fl_render_new(NULL, &r, &err), FL_OK);
     CHECK_EQ_INT(fl_render_finish(r, &img, NULL, &err), FL_ERR_INPUT); /* empty scene */
     CHECK(img.rgba == NULL);

@@ -1220,6 +1220,12 @@ fl_status fl_svg_add_disc(fl_svg *svg, double cx, double cy, double radius,
  * clipped by a <clipPath> of d0. */
 fl_status fl_svg_add_lens(fl_svg *svg, const double d0[3], const double d1[3],
                           const fl_svg_style *style, fl_error *err);
+/* The part of the disc (cx, cy, r) on one side of the line through a and b (a != b): side +1
+ * left of a -> b, -1 right (HAL's disc-and-half-plane flintstones). One <path> (chord and
+ * arc), a <circle> when the line misses the disc on that side, nothing when the part is empty. */
+fl_status fl_svg_add_disc_halfplane(fl_svg *svg, const double disc[3], const double a[2],
+                                    const double b[2], int side, const fl_svg_style *style,
+                                    fl_error *err);
 /* A path of `segments` cubic Bézier segments through 3*segments+1 control points (xy pairs):
  * segment k has control points 3k .. 3k+3. One <path>. */
 fl_status fl_svg_add_bezier(fl_svg *svg, const double *ctrl, size_t segments,

@@ -9,7 +9,7 @@
 
 #include "render/render_internal.h"
 
-typedef enum item_kind { POINTS, POLYLINE, POLYGON, EDGES, DISC, LENS, BEZIER } item_kind;
+typedef enum item_kind { POINTS, POLYLINE, POLYGON, EDGES, DISC, LENS, SEGMENT, BEZIER } item_kind;
 
 typedef struct svg_item {
     item_kind kind;
@@ -211,6 +211,22 @@ fl_status fl_svg_add_lens(fl_svg *svg, const double d0[3], const double d1[3],
     return add_item(svg, &it, v, 6, style, "#cfe0f3", err);
 }
 
+fl_status fl_svg_add_disc_halfplane(fl_svg *svg, const double disc[3], const double a[2],
+                                    const double b[2], int side, const fl_svg_style *style,
+                                    fl_error *err)
+{
+    if (!disc || !a || !b)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_svg_add_disc_halfplane: NULL argument");
+    if (!(disc[2] >= 0)) return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: disc radius < 0");
+    if (side != 1 && side != -1)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "svg: side must be +1 or -1");
+    if (a[0] == b[0] && a[1] == b[1])
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: the half-plane's line needs a != b");
+    double v[8] = {disc[0], disc[1], disc[2], a[0], a[1], b[0], b[1], side};
+    svg_item it = {.kind = SEGMENT};
+    return add_item(svg, &it, v, 8, style, "#cfe0f3", err);
+}
+
 fl_status fl_svg_add_bezier(fl_svg *svg, const double *ctrl, size_t segments,
                             const fl_svg_style *style, fl_error *err)
 {
@@ -238,7 +254,7 @@ static void box_add(double b[4], double x0, double y0, double x1, double y1)
 static void item_box(const svg_item *it, double b[4])
 {
     const double *v = it->v;
-    if (it->kind == DISC) {
+    if (it->kind == DISC || it->kind == SEGMENT) { /* a segment lies in its disc */
         box_add(b, v[0] - v[2], v[1] - v[2], v[0] + v[2], v[1] + v[2]);
     } else if (it->kind == LENS) {
         /* The lens lies in both discs, so in the intersection of their boxes. */
@@ -349,6 +365,49 @@ static int write_lens(FILE *fp, const svg_frame *f, const svg_item *it)
     return 1;
 }
 
+/* The disc (v[0..2]) on side v[7] of the line v[3..4] -> v[5..6]: with t the line's unit
+ * direction, nl its left normal and s the centre's signed distance (c - a).nl, the line meets
+ * the circle at P, Q = c - s nl -+ h t, h = sqrt(r^2 - s^2). Returns 0 when that part is empty,
+ * 1 when it is the whole disc (|s| >= r), 2 for a proper circular segment (P, Q filled, and
+ * *large = 1 when the segment holds the centre). */
+static int segment_shape(const double *v, double p[2], double q[2], int *large)
+{
+    double tx = v[5] - v[3], ty = v[6] - v[4], len = hypot(tx, ty), side = v[7];
+    tx /= len;
+    ty /= len;
+    double s = (v[0] - v[3]) * -ty + (v[1] - v[4]) * tx, r = v[2];
+    if (fabs(s) >= r) return side * s > 0 ? 1 : 0;
+    double h = sqrt(r * r - s * s), fx0 = v[0] + s * ty, fy0 = v[1] - s * tx;
+    p[0] = fx0 - h * tx;
+    p[1] = fy0 - h * ty;
+    q[0] = fx0 + h * tx;
+    q[1] = fy0 + h * ty;
+    *large = side * s > 0;
+    return 2;
+}
+
+/* The segment's outline: the chord P -> Q, then the arc back to P through the chosen side.
+ * On the left side that arc runs counter-clockwise in data coordinates (sweep 0 in the
+ * unmirrored y-down picture, see write_lens), on the right side clockwise (sweep 1). */
+static int write_segment(FILE *fp, const svg_frame *f, const svg_item *it)
+{
+    double p[2], q[2];
+    int large, shape = segment_shape(it->v, p, q, &large);
+    if (shape == 0) return 0;
+    if (shape == 1) {
+        fprintf(fp, "<circle cx=\"%.7g\" cy=\"%.7g\" r=\"%.7g\"", fx(f, it->v[0]), fy(f, it->v[1]),
+                flen(f, it->v[2]));
+    } else {
+        double r = flen(f, it->v[2]);
+        fprintf(fp, "<path d=\"M%.7g %.7g L%.7g %.7g A%.7g %.7g 0 %d %d %.7g %.7g Z\"", fx(f, p[0]),
+                fy(f, p[1]), fx(f, q[0]), fy(f, q[1]), r, r, large, it->v[7] > 0 ? 0 : 1,
+                fx(f, p[0]), fy(f, p[1]));
+    }
+    style_attrs(fp, it, 1);
+    fputs("/>\n", fp);
+    return 1;
+}
+
 /* Writes one item; returns the number of shape elements written (item_elements). */
 static size_t write_item(FILE *fp, const svg_frame *f, const svg_item *it)
 {
@@ -388,6 +447,8 @@ static size_t write_item(FILE *fp, const svg_frame *f, const svg_item *it)
         return 1;
     case LENS:
         return (size_t)write_lens(fp, f, it);
+    case SEGMENT:
+        return (size_t)write_segment(fp, f, it);
     case BEZIER:
         fprintf(fp, "<path d=\"M%.7g %.7g", fx(f, v[0]), fy(f, v[1]));
         for (size_t i = 1; i < pairs; i++)
@@ -425,6 +486,11 @@ static size_t item_elements(const svg_item *it)
         return it->polygon_count;
     case LENS:
         return hypot(it->v[3] - it->v[0], it->v[4] - it->v[1]) < it->v[2] + it->v[5];
+    case SEGMENT: {
+        double p[2], q[2];
+        int large;
+        return segment_shape(it->v, p, q, &large) != 0;
+    }
     default:
         return 1;
     }

@@ -104,8 +104,8 @@ static void test_canvas_writes_every_item_well_formed(void)
 
 /* Centre of the SVG arc from (x1, y1) to (x2, y2) of radius r with the given flags (SVG 1.1
  * F.6.5 with rx = ry = r and no rotation). */
-static void arc_center(double x1, double y1, double x2, double y2, double r, int large,
-                       int sweep, double c[2])
+static void arc_center(double x1, double y1, double x2, double y2, double r, int large, int sweep,
+                       double c[2])
 {
     double xp = (x1 - x2) / 2, yp = (y1 - y2) / 2, l2 = xp * xp + yp * yp;
     double k = sqrt(fmax(0, (r * r - l2) / l2)) * (large != sweep ? 1 : -1);
@@ -181,6 +181,50 @@ static void test_lens_of_nested_or_disjoint_discs(void)
     fl_svg_free(svg);
 }
 
+/* Disc-and-half-plane flintstones: the chord's ends lie on the circle and on the line, and
+ * the arc back bends around the circle's own centre on both sides of the line. */
+static void test_disc_halfplane_segments(void)
+{
+    for (int side = -1; side <= 1; side += 2) {
+        fl_svg *svg = NULL;
+        fl_error err;
+        CHECK_EQ_INT(fl_svg_new(400, &svg, &err), FL_OK);
+        double d[3] = {0.2, -0.1, 1}, a[2] = {-2, 0.3}, b[2] = {2, 0.3};
+        CHECK_EQ_INT(fl_svg_add_disc(svg, d[0], d[1], d[2], NULL, &err), FL_OK);
+        CHECK_EQ_INT(fl_svg_add_disc_halfplane(svg, d, a, b, side, NULL, &err), FL_OK);
+        CHECK_EQ_INT(fl_svg_element_count(svg), 2);
+        CHECK_EQ_INT(fl_svg_write(svg, "render_seg.svg", &err), FL_OK);
+        char *s = slurp("render_seg.svg");
+        double c[3], p[2], q[2], r, rb, e[2];
+        int rot, large, sweep;
+        const char *ci = s ? strstr(s, "<circle") : NULL, *pa = s ? strstr(s, "<path") : NULL;
+        CHECK(ci &&
+              sscanf(ci, "<circle cx=\"%lf\" cy=\"%lf\" r=\"%lf\"", &c[0], &c[1], &c[2]) == 3);
+        CHECK(pa && sscanf(pa, "<path d=\"M%lf %lf L%lf %lf A%lf %lf %d %d %d %lf %lf", &p[0],
+                           &p[1], &q[0], &q[1], &r, &rb, &rot, &large, &sweep, &e[0], &e[1]) == 11);
+        if (ci && pa) {
+            CHECK_NEAR(hypot(p[0] - c[0], p[1] - c[1]), c[2], 1e-3);
+            CHECK_NEAR(hypot(q[0] - c[0], q[1] - c[1]), c[2], 1e-3);
+            CHECK_NEAR(p[1], q[1], 1e-3);  /* the line y = 0.3 is horizontal in the picture */
+            CHECK(p[1] < c[1]);            /* and above the centre (y down) */
+            CHECK_EQ_INT(large, side < 0); /* the centre lies below the line: right of a -> b */
+            double ac[2];
+            arc_center(q[0], q[1], e[0], e[1], r, large, sweep, ac);
+            CHECK_NEAR(ac[0], c[0], 1e-2);
+            CHECK_NEAR(ac[1], c[1], 1e-2);
+        }
+        free(s);
+        remove("render_seg.svg");
+        /* A line missing the disc: the whole disc on one side, nothing on the other. */
+        double fa[2] = {-2, 5}, fb[2] = {2, 5};
+        size_t before = fl_svg_element_count(svg);
+        CHECK_EQ_INT(fl_svg_add_disc_halfplane(svg, d, fa, fb, side, NULL, &err), FL_OK);
+        CHECK_EQ_INT(fl_svg_element_count(svg), before + (side < 0));
+        CHECK_EQ_INT(fl_svg_add_disc_halfplane(svg, d, fa, fa, side, NULL, &err), FL_ERR_INPUT);
+        fl_svg_free(svg);
+    }
+}
+
 /* A polygon drawn on the canvas lands on the same picture coordinates as in fl_write_polygon's
  * SVG (same frame: 1000 px longer side, 50 px margin, y up). */
 static void test_polygon_frame_matches_io_svg_writer(void)
@@ -234,5 +278,6 @@ static void test_bad_styles_and_data_are_rejected(void)
 FL_TEST_MAIN(FL_TEST_CASE(test_canvas_writes_every_item_well_formed),
              FL_TEST_CASE(test_lens_arcs_meet_on_both_circles),
              FL_TEST_CASE(test_lens_of_nested_or_disjoint_discs),
+             FL_TEST_CASE(test_disc_halfplane_segments),
              FL_TEST_CASE(test_polygon_frame_matches_io_svg_writer),
              FL_TEST_CASE(test_bad_styles_and_data_are_rejected))

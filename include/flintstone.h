@@ -1149,7 +1149,8 @@ typedef struct fl_render_camera {
 
 /* What fl_render_finish produced besides the image. */
 typedef struct fl_render_stats {
-    size_t pixels_covered; /* pixels where something was drawn (any of their samples) */
+    uint32_t width, height; /* of the image */
+    size_t pixels_covered;  /* pixels where something was drawn (any of their samples) */
     fl_render_camera camera;
 } fl_render_stats;
 

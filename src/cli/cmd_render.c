@@ -341,16 +341,13 @@ static fl_status render_svg(const render_args *a, const fl_points *p, const char
 
 static fl_status render_png(fl_render *r, const char *out, render_result *res, fl_error *err)
 {
-    fl_image img = {0};
     fl_render_stats stats;
-    fl_status st = fl_render_finish(r, &img, &stats, err);
-    if (st == FL_OK) st = cli_write_png(out, &img, err);
+    fl_status st = cli_render_png(r, out, &stats, err);
     if (st == FL_OK) {
-        res->width = img.width;
-        res->height = img.height;
+        res->width = stats.width;
+        res->height = stats.height;
         res->covered = stats.pixels_covered;
     }
-    fl_image_free(&img);
     return st;
 }
 

@@ -65,3 +65,12 @@ fl_status cli_write_png(const char *path, const fl_image *image, fl_error *err)
     }
     return fl_out_commit(&out, err);
 }
+
+fl_status cli_render_png(fl_render *render, const char *path, fl_render_stats *stats, fl_error *err)
+{
+    fl_image img;
+    fl_status st = fl_render_finish(render, &img, stats, err);
+    if (st == FL_OK) st = cli_write_png(path, &img, err);
+    fl_image_free(&img);
+    return st;
+}

@@ -323,6 +323,8 @@ fl_status fl_render_finish(fl_render *render, fl_image *image, fl_render_stats *
         image->height = render->opt.height;
         size_t covered = resolve(&t, render, image);
         if (stats) {
+            stats->width = image->width;
+            stats->height = image->height;
             stats->pixels_covered = covered;
             stats->camera = t.cam;
             double ss = render->opt.supersample;

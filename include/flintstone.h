@@ -1168,6 +1168,189 @@ fl_status fl_hausdorff_write_field_ply(const char *path, const fl_hausdorff_fiel
 
 /* end of hausdorff */
 
+/* ==== render ============================================================================== */
+/* (section owned by src/render; docs/render.md)
+ *
+ * Pictures of the library's data without any dependency beyond libc and libm.
+ *  - 3D: a small software rasterizer into an RGBA8 pixel buffer (fl_image): a z-buffer, an
+ *    orthographic or perspective camera looking from (azimuth, elevation) and fitted to the
+ *    bounding box of everything drawn, Lambert + Blinn-Phong shading, an optional wireframe
+ *    overlay, per-vertex scalars through a colormap, reflection lines (zebra) for smoothness
+ *    checks, 2x2 supersampling. Balls and points are ray-cast spheres in the same z-buffer.
+ *    Encoding the pixels (PNG) is the caller's business; the flintstone command uses libpng.
+ *  - 2D: an SVG canvas that collects points, polylines, polygons, graph edges, discs, lenses
+ *    (two intersecting discs, i.e. flintstones) and cubic Bézier paths in data coordinates and
+ *    writes one standalone SVG fitted to them (y up, like src/io's polygon pictures).
+ * Conventions: z is "up" in 3D; colours are 4 bytes RGBA; the image's first row is its top. */
+
+/* An RGBA8 image: width*height pixels, 4 bytes each, rows top to bottom. Free with
+ * fl_image_free (a zeroed image is a no-op). */
+typedef struct fl_image {
+    uint32_t width, height;
+    uint8_t *rgba;
+} fl_image;
+
+/* Releases the pixels and zeroes *image; NULL or a zeroed image is a no-op. */
+void fl_image_free(fl_image *image);
+
+/* How per-vertex scalars become colours: t = (s - min) / (max - min) clamped to [0, 1]. */
+typedef enum fl_render_colormap {
+    FL_RENDER_COOLWARM = 0, /* blue (low) -> light grey -> red (high), diverging (Moreland) */
+    FL_RENDER_VIRIDIS = 1,  /* dark blue -> green -> yellow, perceptually uniform */
+    FL_RENDER_GRAY = 2      /* black -> white */
+} fl_render_colormap;
+
+/* The RGBA colour of t in [0, 1] under a colormap (t outside is clamped, NaN gives grey). */
+void fl_render_colormap_rgba(fl_render_colormap map, double t, uint8_t rgba[4]);
+
+/* Scene options; all zero is the default: 800x600, azimuth 0 and elevation 0 (looking along -x
+ * from +x, z up), perspective with a 30 degree vertical field of view, no supersampling, opaque
+ * white background. */
+typedef struct fl_render_options {
+    uint32_t width, height;    /* pixels, 1..16384 each and at most 2^26 samples in all
+                                * (width * height * supersample^2); 0 = 800 x 600 */
+    double azimuth, elevation; /* degrees: the camera sits in direction (cos e cos a, cos e sin a,
+                                * sin e) from the centre of the scene */
+    int orthographic;          /* nonzero: parallel projection */
+    double fov;                /* perspective: vertical field of view in degrees, (0, 170);
+                                * 0 = 30 */
+    int supersample;           /* 0 or 1: one sample a pixel; 2: 2x2 samples averaged */
+    double margin;             /* fraction of the image left free on each side; 0 = 0.05 */
+    const uint8_t *background; /* 4 bytes RGBA, or NULL for opaque white */
+} fl_render_options;
+
+/* How to draw one mesh. All zero: light steel blue, face normals, no wireframe, no zebra. */
+typedef struct fl_render_mesh_style {
+    const uint8_t *color;      /* 4 bytes RGBA (alpha ignored), NULL = default */
+    const double *normals;     /* NULL or 3 per vertex (need not be unit): smooth shading */
+    const double *scalars;     /* NULL or 1 per vertex: colour through `colormap` instead */
+    double scalar_min, scalar_max; /* the colormap's range; min >= max: the scalars' own range */
+    fl_render_colormap colormap;
+    int wireframe;             /* nonzero: dark triangle edges about 1 pixel wide on top */
+    int zebra;                 /* nonzero: reflection lines (stripes of the reflected view
+                                * direction against an environment of parallel light tubes) */
+    double zebra_stripes;      /* stripe pairs over a half turn of the reflected ray; 0 = 10 */
+} fl_render_mesh_style;
+
+/* Per-vertex normals for smooth shading: the sum of the (area-weighted) normals of the
+ * triangles around each vertex, normalized; (0, 0, 0) for a vertex no triangle uses. Triangles
+ * are taken as oriented, so a misoriented mesh gets cancelling normals. normals receives 3 per
+ * vertex. FL_ERR_INPUT for indices >= vertex_count. */
+fl_status fl_render_vertex_normals(const fl_mesh *mesh, double *normals, fl_error *err);
+
+/* A scene under construction. The add calls validate and copy what they need, so the caller's
+ * arrays may be released right after. */
+typedef struct fl_render fl_render;
+
+/* The camera of a finished scene: a point p maps to pixel coordinates (x right, y down, the
+ * pixel (i, j) covers [i, i+1) x [j, j+1)) and a depth through fl_render_project. */
+typedef struct fl_render_camera {
+    double center[3];                  /* the centre of the scene's bounding box */
+    double right[3], up[3], toward[3]; /* orthonormal; toward points from the scene to the eye */
+    int orthographic;
+    double distance;                   /* perspective: eye = center + distance * toward */
+    double scale;                      /* pixels per unit (orthographic) or per unit of x/w */
+    double offset[2];                  /* pixel position of the projected centre */
+} fl_render_camera;
+
+/* What fl_render_finish produced besides the image. */
+typedef struct fl_render_stats {
+    uint32_t width, height; /* of the image */
+    size_t pixels_covered;  /* pixels where something was drawn (any of their samples) */
+    fl_render_camera camera;
+} fl_render_stats;
+
+/* Starts an empty scene with the options (NULL = defaults). FL_ERR_USAGE for sizes out of
+ * range or a bad field of view, FL_ERR_NOMEM; on failure *out is NULL. */
+fl_status fl_render_new(const fl_render_options *opt, fl_render **out, fl_error *err);
+/* Releases a scene and everything added to it; NULL is a no-op. */
+void fl_render_free(fl_render *render);
+
+/* Adds a triangle mesh (any topology; both sides of every triangle are lit). FL_ERR_INPUT for
+ * non-finite coordinates, normals or scalars and for indices >= vertex_count. */
+fl_status fl_render_add_mesh(fl_render *render, const fl_mesh *mesh,
+                             const fl_render_mesh_style *style, fl_error *err);
+
+/* Adds balls (xyzw, w = squared radius) as shaded spheres; balls with w <= 0 have no extent and
+ * are skipped. `color` NULL: warm orange. FL_ERR_INPUT for non-finite values. */
+fl_status fl_render_add_balls(fl_render *render, const fl_balls *balls, const uint8_t *color,
+                              fl_error *err);
+
+/* Adds n 3D points (xyz) as small spheres of `radius`; radius <= 0 means 0.004 times the
+ * diagonal of the points' bounding box (0.01 for a single point). `color` NULL: dark grey. */
+fl_status fl_render_add_points(fl_render *render, const double *xyz, size_t n, double radius,
+                               const uint8_t *color, fl_error *err);
+
+/* Fits the camera to the bounding box of everything added, rasterizes and fills *image
+ * (release with fl_image_free) and, if stats is not NULL, *stats. The scene may be finished
+ * again (e.g. after adding more). FL_ERR_INPUT when nothing with an extent was added;
+ * FL_ERR_NOMEM. On failure *image is zeroed. */
+fl_status fl_render_finish(fl_render *render, fl_image *image, fl_render_stats *stats,
+                           fl_error *err);
+
+/* Projects p: out[0], out[1] pixel coordinates, out[2] the distance in front of the eye along
+ * the view axis (perspective) or -(p - center).toward (orthographic); smaller is nearer. */
+void fl_render_project(const fl_render_camera *camera, const double p[3], double out[3]);
+
+/* Style of one SVG item. NULL strings take the item's default; colours are SVG colour names,
+ * "#rrggbb" or "none" (other characters are rejected to keep the file well-formed). Widths and
+ * point radii are in picture pixels, so they do not depend on the data's scale. */
+typedef struct fl_svg_style {
+    const char *stroke;  /* default "#1f4e79" */
+    const char *fill;    /* default "none" ("#cfe0f3" for polygons and lenses, stroke colour
+                          * for points) */
+    double stroke_width; /* 0 = 2 */
+    double opacity;      /* 0 = 1 (opaque) */
+    double point_radius; /* points: 0 = 3 */
+} fl_svg_style;
+
+typedef struct fl_svg fl_svg;
+
+/* A canvas whose picture is `size` pixels on its longer side (0 = 1000) plus a margin of 5%
+ * of it all round; data coordinates are fitted to it with y up. */
+fl_status fl_svg_new(double size, fl_svg **out, fl_error *err);
+void fl_svg_free(fl_svg *svg);
+
+/* n points xy[2i], xy[2i+1] as dots (one <circle> each). */
+fl_status fl_svg_add_points(fl_svg *svg, const double *xy, size_t n, const fl_svg_style *style,
+                            fl_error *err);
+/* A polyline through n points (closed: back to the first), one <path>. */
+fl_status fl_svg_add_polyline(fl_svg *svg, const double *xy, size_t n, int closed,
+                              const fl_svg_style *style, fl_error *err);
+/* Every polygon of `polygon` as one <path> filled with the even-odd rule (holes stay empty). */
+fl_status fl_svg_add_polygon(fl_svg *svg, const fl_polygon *polygon, const fl_svg_style *style,
+                             fl_error *err);
+/* Straight edges between points: edges[2k], edges[2k+1] index xy (n points); one <path>. */
+fl_status fl_svg_add_edges(fl_svg *svg, const double *xy, size_t n, const uint32_t *edges,
+                           size_t edge_count, const fl_svg_style *style, fl_error *err);
+/* A disc (centre, radius in data units, radius >= 0), one <circle>. */
+fl_status fl_svg_add_disc(fl_svg *svg, double cx, double cy, double radius,
+                          const fl_svg_style *style, fl_error *err);
+/* The lens d0 ∩ d1 of two discs (cx, cy, r each; a flintstone, HAL §3) as one <circle> for d1
+ * clipped by a <clipPath> of d0. */
+fl_status fl_svg_add_lens(fl_svg *svg, const double d0[3], const double d1[3],
+                          const fl_svg_style *style, fl_error *err);
+/* The part of the disc (cx, cy, r) on one side of the line through a and b (a != b): side +1
+ * left of a -> b, -1 right (HAL's disc-and-half-plane flintstones). One <path> (chord and
+ * arc), a <circle> when the line misses the disc on that side, nothing when the part is empty. */
+fl_status fl_svg_add_disc_halfplane(fl_svg *svg, const double disc[3], const double a[2],
+                                    const double b[2], int side, const fl_svg_style *style,
+                                    fl_error *err);
+/* A path of `segments` cubic Bézier segments through 3*segments+1 control points (xy pairs):
+ * segment k has control points 3k .. 3k+3. One <path>. */
+fl_status fl_svg_add_bezier(fl_svg *svg, const double *ctrl, size_t segments,
+                            const fl_svg_style *style, fl_error *err);
+
+/* Number of SVG shape elements the canvas will write (circles and paths). */
+size_t fl_svg_element_count(const fl_svg *svg);
+/* Picture size in pixels (margin included) as it would be written now. */
+void fl_svg_size(const fl_svg *svg, double *width, double *height);
+
+/* Writes the canvas atomically to path (any extension). FL_ERR_IO on failure, target untouched. */
+fl_status fl_svg_write(const fl_svg *svg, const char *path, fl_error *err);
+
+/* end of render */
+
 
 #ifdef __cplusplus
 }

@@ -14,6 +14,7 @@ int cmd_inside(int argc, char **argv);
 int cmd_intersect(int argc, char **argv);
 int cmd_closest(int argc, char **argv);
 int cmd_hausdorff(int argc, char **argv);
+int cmd_render(int argc, char **argv);
 
 #include "flintstone.h"
 

@@ -21,6 +21,8 @@ static const cli_command commands[] = {
     {"intersect", "do two polygons' boundaries intersect (flintstone trees)", cmd_intersect},
     {"closest", "closest points on a mesh or polyline (Meshsweeper hierarchy)", cmd_closest},
     {"hausdorff", "certified Hausdorff distance between two meshes or polylines", cmd_hausdorff},
+    {"render", "pictures: meshes, balls, 3D points to PNG; 2D points and polygons to SVG",
+     cmd_render},
     {"version", "print the version", cmd_version},
 };
 

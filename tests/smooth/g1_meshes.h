@@ -47,7 +47,10 @@ static inline uint32_t g1_mid(double *v, uint32_t *nv, uint32_t *key, uint32_t *
     key[2 * i + 1] = hi;
     key[2 * i + 2] = UINT32_MAX;
     double *p = v + 3 * *nv, s = 0;
-    for (int d = 0; d < 3; d++) s += (p[d] = (v[3 * a + d] + v[3 * b + d]) / 2) * p[d];
+    for (int d = 0; d < 3; d++) {
+        p[d] = (v[3 * a + d] + v[3 * b + d]) / 2;
+        s += p[d] * p[d];
+    }
     for (int d = 0; d < 3; d++) p[d] /= sqrt(s);
     return val[i] = (*nv)++;
 }

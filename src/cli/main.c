@@ -19,6 +19,8 @@ static const cli_command commands[] = {
     {"inside", "point inclusion in a polygon through its flintstone tree", cmd_inside},
     {"intersect", "do two polygons' boundaries intersect (flintstone trees)", cmd_intersect},
     {"closest", "closest points on a mesh or polyline (Meshsweeper hierarchy)", cmd_closest},
+    {"smooth", "G1 cubic Bézier curve or surface through a polygon's or mesh's vertices",
+     cmd_smooth},
     {"version", "print the version", cmd_version},
 };
 

@@ -198,6 +198,7 @@ static void print_surface(const cli_common *c, const fl_g1_surface *s, const fl_
         cli_json_double(&j, "max_normal_error", m->max_normal_error);
         cli_json_double(&j, "max_edge_normal_jump_deg", m->max_edge_normal_jump_deg);
         cli_json_uint(&j, "orientation_repairs", s->orientation_repairs);
+        cli_json_uint(&j, "orientation_failures", s->orientation_failures);
         cli_json_uint(&j, "orientation_flips", m->orientation_flips);
         cli_json_double(&j, "max_deviation", m->max_deviation);
         cli_json_uint(&j, "quadratic_edges", s->quadratic_edges);

@@ -266,6 +266,7 @@ static void test_g1_bez_round_trip_is_exact(void)
     CHECK(r.patch_count == s.patch_count &&
           memcmp(r.ctrl, s.ctrl, s.patch_count * 30 * sizeof(double)) == 0 &&
           memcmp(r.corner, s.corner, s.patch_count * 3 * sizeof(uint32_t)) == 0);
+    fl_g1_surface_free(&r);
     FILE *f = fopen("g1_bad.bez", "w");
     fputs("flintstone-bez 1\npatches 1\n0 1 2\n0 0 0\n1 2\n", f);
     fclose(f);

@@ -47,10 +47,14 @@ typedef struct smooth_args {
 
 static int parse_weighting(const char *s, int surface, int *out)
 {
-    if (!strcmp(s, surface ? "area" : "length")) *out = FL_G1_WEIGHT_SIZE;
-    else if (!strcmp(s, "uniform")) *out = FL_G1_WEIGHT_UNIFORM;
-    else if (!strcmp(s, "inverse")) *out = FL_G1_WEIGHT_INVERSE;
-    else return -1;
+    if (!strcmp(s, surface ? "area" : "length"))
+        *out = FL_G1_WEIGHT_SIZE;
+    else if (!strcmp(s, "uniform"))
+        *out = FL_G1_WEIGHT_UNIFORM;
+    else if (!strcmp(s, "inverse"))
+        *out = FL_G1_WEIGHT_INVERSE;
+    else
+        return -1;
     return 0;
 }
 
@@ -80,15 +84,16 @@ static int parse_value(smooth_args *a, const char *o, const char *v)
 
 static int parse(int argc, char **argv, cli_common *c, smooth_args *a)
 {
-    static const char *valued[] = {"--tangents", "--normals", "--scheme", "--tension", "--tess",
-                                   "--samples"};
+    static const char *valued[] = {"--tangents", "--normals", "--scheme",
+                                   "--tension",  "--tess",    "--samples"};
     for (int i = 1; i < argc; i++) {
         int r = cli_common_option(c, argc, argv, &i);
         if (r < 0) return 1;
         if (r > 0) continue;
         const char *o = argv[i];
         int is_valued = 0;
-        for (size_t k = 0; k < sizeof valued / sizeof *valued; k++) is_valued |= !strcmp(o, valued[k]);
+        for (size_t k = 0; k < sizeof valued / sizeof *valued; k++)
+            is_valued |= !strcmp(o, valued[k]);
         if (is_valued) {
             if (i + 1 >= argc) return cli_fail(1, "smooth: %s needs a value", o);
             if (parse_value(a, o, argv[++i])) return 1;
@@ -126,8 +131,7 @@ static double max_tangent_jump(const fl_g1_curve *c)
     return worst;
 }
 
-static fl_status write_curve(const char *path, const fl_g1_curve *c, size_t samples,
-                             fl_error *err)
+static fl_status write_curve(const char *path, const fl_g1_curve *c, size_t samples, fl_error *err)
 {
     char ext[16];
     fl_path_extension(path, ext, sizeof ext);
@@ -163,8 +167,9 @@ static int run_curve(const cli_common *c, const smooth_args *a)
             cli_json_end(&j);
         } else if (!c->quiet) {
             printf("%zu cubic segments in %zu rings, %zu tangents repaired, max tangent jump "
-                   "%.3g deg (%.3f s)\n", curve.vertex_count, curve.ring_count,
-                   curve.orientation_repairs, jump, cli_now() - t0);
+                   "%.3g deg (%.3f s)\n",
+                   curve.vertex_count, curve.ring_count, curve.orientation_repairs, jump,
+                   cli_now() - t0);
         }
     }
     fl_g1_curve_free(&curve);
@@ -172,8 +177,7 @@ static int run_curve(const cli_common *c, const smooth_args *a)
     return st ? cli_report(&err) : 0;
 }
 
-static fl_status write_surface(const char *path, const fl_g1_surface *s, size_t tess,
-                               fl_error *err)
+static fl_status write_surface(const char *path, const fl_g1_surface *s, size_t tess, fl_error *err)
 {
     char ext[16];
     fl_path_extension(path, ext, sizeof ext);
@@ -207,9 +211,10 @@ static void print_surface(const cli_common *c, const fl_g1_surface *s, const fl_
     } else if (!c->quiet) {
         printf("%zu cubic patches: vertex error %.3g, normal error %.3g, max normal jump %.3g deg"
                " across patch edges, %zu normals repaired, %zu folded edges, max deviation "
-               "%.4g mean edge lengths (%.3f s)\n", s->patch_count, m->max_vertex_error,
-               m->max_normal_error, m->max_edge_normal_jump_deg, s->orientation_repairs,
-               m->orientation_flips, m->max_deviation, seconds);
+               "%.4g mean edge lengths (%.3f s)\n",
+               s->patch_count, m->max_vertex_error, m->max_normal_error,
+               m->max_edge_normal_jump_deg, s->orientation_repairs, m->orientation_flips,
+               m->max_deviation, seconds);
     }
 }
 
@@ -222,12 +227,13 @@ static int run_surface(const cli_common *c, const smooth_args *a)
     fl_g1_metrics metrics;
     fl_status st = fl_read_mesh(a->input, &m, &err);
     if (st) return cli_report(&err);
-    fl_g1_surface_options o = {
-        .scheme = a->scheme && !strcmp(a->scheme, "pn") ? FL_G1_MACRO : FL_G1_THREE_SPLIT,
-        .weighting = a->weighting, .tension = a->tension};
+    fl_g1_surface_options o = {.scheme = a->scheme && !strcmp(a->scheme, "pn") ? FL_G1_MACRO
+                                                                               : FL_G1_THREE_SPLIT,
+                               .weighting = a->weighting,
+                               .tension = a->tension};
     st = fl_g1_surface_build(&m, &o, &s, &err);
-    if (!st) st = fl_g1_surface_measure(&s, &m, a->samples ? (unsigned)a->samples : 8, &metrics,
-                                        &err);
+    if (!st)
+        st = fl_g1_surface_measure(&s, &m, a->samples ? (unsigned)a->samples : 8, &metrics, &err);
     if (!st && c->output) st = write_surface(c->output, &s, a->tess ? a->tess : 4, &err);
     if (!st) print_surface(c, &s, &metrics, cli_now() - t0);
     fl_g1_surface_free(&s);

@@ -20,12 +20,12 @@ fl_status fl_g1_write_bez(const char *path, const fl_g1_surface *s, fl_error *er
     fl_out_file out;
     fl_status st = fl_out_open(&out, path, 0, err);
     if (st) return st;
-    fprintf(out.fp, "flintstone-bez 1\n# cubic Bezier triangles, 10 control points each in the "
-                    "order b300 b210 b201 b120 b111 b102 b030 b021 b012 b003\npatches %zu\n",
+    fprintf(out.fp,
+            "flintstone-bez 1\n# cubic Bezier triangles, 10 control points each in the "
+            "order b300 b210 b201 b120 b111 b102 b030 b021 b012 b003\npatches %zu\n",
             s->patch_count);
     for (size_t p = 0; p < s->patch_count; p++) {
-        fprintf(out.fp, "%u %u %u\n", s->corner[3 * p], s->corner[3 * p + 1],
-                s->corner[3 * p + 2]);
+        fprintf(out.fp, "%u %u %u\n", s->corner[3 * p], s->corner[3 * p + 1], s->corner[3 * p + 2]);
         for (int k = 0; k < 10; k++) {
             const double *c = s->ctrl + 30 * p + 3 * k;
             fprintf(out.fp, "%.17g %.17g %.17g\n", c[0], c[1], c[2]);

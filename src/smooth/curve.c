@@ -8,8 +8,14 @@
 #include "core/core.h"
 
 /* Index of the vertex after / before i inside ring [lo, hi). */
-static size_t ring_next(size_t i, size_t lo, size_t hi) { return i + 1 < hi ? i + 1 : lo; }
-static size_t ring_prev(size_t i, size_t lo, size_t hi) { return i > lo ? i - 1 : hi - 1; }
+static size_t ring_next(size_t i, size_t lo, size_t hi)
+{
+    return i + 1 < hi ? i + 1 : lo;
+}
+static size_t ring_prev(size_t i, size_t lo, size_t hi)
+{
+    return i > lo ? i - 1 : hi - 1;
+}
 
 static void normalize2(double *v)
 {
@@ -73,8 +79,8 @@ static fl_status check_ring(const fl_polygon *p, size_t lo, size_t hi, fl_error 
 
 /* §9.2: p1 = p0 + tension (p3* - p0), p3* the projection of p3 on the tangent line at p0, and
  * symmetrically p2 (tension 1/3 in the thesis). */
-static void segment_controls(const double *p0, const double *t0, const double *p3,
-                             const double *t3, double tension, double *c)
+static void segment_controls(const double *p0, const double *t0, const double *p3, const double *t3,
+                             double tension, double *c)
 {
     double s0 = (p3[0] - p0[0]) * t0[0] + (p3[1] - p0[1]) * t0[1];
     double s3 = (p0[0] - p3[0]) * t3[0] + (p0[1] - p3[1]) * t3[1];
@@ -164,8 +170,8 @@ void fl_g1_curve_eval(const fl_g1_curve *curve, size_t segment, double s, double
     for (int k = 0; k < 2; k++) {
         if (point) point[k] = b0 * c[k] + b1 * c[2 + k] + b2 * c[4 + k] + b3 * c[6 + k];
         if (derivative)
-            derivative[k] = d0 * (c[2 + k] - c[k]) + d1 * (c[4 + k] - c[2 + k]) +
-                            d2 * (c[6 + k] - c[4 + k]);
+            derivative[k] =
+                d0 * (c[2 + k] - c[k]) + d1 * (c[4 + k] - c[2 + k]) + d2 * (c[6 + k] - c[4 + k]);
     }
 }
 
@@ -227,10 +233,11 @@ fl_status fl_g1_curve_write_svg(const char *path, const fl_g1_curve *curve, fl_e
     fprintf(fp,
             "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"%.7g\" "
             "height=\"%.7g\" viewBox=\"%.17g %.17g %.17g %.17g\">\n",
-            (w + 2 * pad) * scale, (h + 2 * pad) * scale, box[0] - pad, -box[3] - pad,
-            w + 2 * pad, h + 2 * pad);
-    fprintf(fp, "<g transform=\"scale(1,-1)\" fill=\"#dde8f4\" fill-rule=\"evenodd\" "
-                "stroke=\"#1f4e79\" stroke-width=\"%.7g\">\n",
+            (w + 2 * pad) * scale, (h + 2 * pad) * scale, box[0] - pad, -box[3] - pad, w + 2 * pad,
+            h + 2 * pad);
+    fprintf(fp,
+            "<g transform=\"scale(1,-1)\" fill=\"#dde8f4\" fill-rule=\"evenodd\" "
+            "stroke=\"#1f4e79\" stroke-width=\"%.7g\">\n",
             1.5 / scale);
     for (size_t p = 0; p < curve->polygon_count; p++) {
         fputs("<path d=\"", fp);
@@ -239,8 +246,8 @@ fl_status fl_g1_curve_write_svg(const char *path, const fl_g1_curve *curve, fl_e
             fprintf(fp, "M %.17g %.17g", curve->ctrl[8 * lo], curve->ctrl[8 * lo + 1]);
             for (size_t i = lo; i < hi; i++) {
                 const double *c = curve->ctrl + 8 * i;
-                fprintf(fp, " C %.17g %.17g %.17g %.17g %.17g %.17g", c[2], c[3], c[4], c[5],
-                        c[6], c[7]);
+                fprintf(fp, " C %.17g %.17g %.17g %.17g %.17g %.17g", c[2], c[3], c[4], c[5], c[6],
+                        c[7]);
             }
             fputs(" Z ", fp);
         }

@@ -123,8 +123,8 @@ static double mean_edge_length(const fl_mesh *mesh)
     return sum / (3.0 * (double)mesh->triangle_count);
 }
 
-static fl_status measure_deviation(const fl_g1_surface *sf, const fl_mesh *mesh,
-                                   unsigned samples, fl_g1_metrics *m, fl_error *err)
+static fl_status measure_deviation(const fl_g1_surface *sf, const fl_mesh *mesh, unsigned samples,
+                                   fl_g1_metrics *m, fl_error *err)
 {
     fl_sweep *sw = NULL;
     fl_sweep_cursor *cur = NULL;
@@ -147,8 +147,8 @@ static fl_status measure_deviation(const fl_g1_surface *sf, const fl_mesh *mesh,
     return st;
 }
 
-fl_status fl_g1_surface_measure(const fl_g1_surface *surface, const fl_mesh *mesh,
-                                unsigned samples, fl_g1_metrics *out, fl_error *err)
+fl_status fl_g1_surface_measure(const fl_g1_surface *surface, const fl_mesh *mesh, unsigned samples,
+                                fl_g1_metrics *out, fl_error *err)
 {
     if (out) memset(out, 0, sizeof *out);
     if (!surface || !mesh || !out || samples < 2 || mesh->triangle_count == 0 ||

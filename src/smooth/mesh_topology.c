@@ -15,7 +15,8 @@ fl_status g1_require_closed_mesh(const fl_mesh *mesh, fl_error *err)
     if (!rep.closed)
         st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
                      "the mesh is not closed (%zu boundary edges); smoothing needs a closed "
-                     "manifold oriented mesh", rep.boundary_edges);
+                     "manifold oriented mesh",
+                     rep.boundary_edges);
     else if (!rep.manifold)
         st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
                      "the mesh is not manifold (%zu edges, %zu vertices)", rep.nonmanifold_edges,

@@ -6,8 +6,7 @@
 
 #include "smooth/smooth_internal.h"
 
-fl_status fl_g1_vertex_normals(const fl_mesh *mesh, int weighting, double *normals,
-                               fl_error *err)
+fl_status fl_g1_vertex_normals(const fl_mesh *mesh, int weighting, double *normals, fl_error *err)
 {
     if (!mesh || !normals || weighting < 0 || weighting > FL_G1_WEIGHT_INVERSE)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "NULL argument or bad weighting");
@@ -26,7 +25,8 @@ fl_status fl_g1_vertex_normals(const fl_mesh *mesh, int weighting, double *norma
         if (weighting == FL_G1_WEIGHT_UNIFORM) w = 1 / twice_area;
         if (weighting == FL_G1_WEIGHT_INVERSE) w = 2 / (twice_area * twice_area);
         for (int k = 0; k < 3; k++)
-            for (int d = 0; d < 3; d++) normals[3 * v[k] + d] += w * c[d];
+            for (int d = 0; d < 3; d++)
+                normals[3 * v[k] + d] += w * c[d];
     }
     for (size_t i = 0; i < mesh->vertex_count; i++) {
         double *n = normals + 3 * i;
@@ -60,8 +60,8 @@ static int star_ok(const fl_mesh *m, uint32_t v, const uint32_t *star, size_t n_
 /* Finds a normal with positive component along every incident triangle normal, starting from
  * the estimate: each round pushes n towards the unit normal of the worst triangle until that
  * triangle sees n at a small positive angle (a perceptron on the cone of feasible normals). */
-static int repair_one(const fl_mesh *m, uint32_t v, const uint32_t *star, size_t n_star,
-                      double *n, double h)
+static int repair_one(const fl_mesh *m, uint32_t v, const uint32_t *star, size_t n_star, double *n,
+                      double h)
 {
     for (int round = 0; round < 200; round++) {
         if (star_ok(m, v, star, n_star, n, h)) return 1;
@@ -80,14 +80,15 @@ static int repair_one(const fl_mesh *m, uint32_t v, const uint32_t *star, size_t
             }
         }
         double push = 0.05 - worst;
-        for (int d = 0; d < 3; d++) n[d] += push * u_worst[d];
+        for (int d = 0; d < 3; d++)
+            n[d] += push * u_worst[d];
         if (!(g1_normalize(n) > 0)) return 0;
     }
     return star_ok(m, v, star, n_star, n, h);
 }
 
-fl_status g1_repair_normals(const fl_mesh *m, double *normals, size_t *repairs,
-                            size_t *failures, fl_error *err)
+fl_status g1_repair_normals(const fl_mesh *m, double *normals, size_t *repairs, size_t *failures,
+                            fl_error *err)
 {
     size_t nv = m->vertex_count, nh = 3 * m->triangle_count;
     size_t *start = fl_calloc_array(nv + 1, sizeof *start);
@@ -99,8 +100,10 @@ fl_status g1_repair_normals(const fl_mesh *m, double *normals, size_t *repairs,
         free(h);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     }
-    for (size_t i = 0; i < nh; i++) start[m->tri[i] + 1]++;
-    for (size_t v = 0; v < nv; v++) start[v + 1] += start[v];
+    for (size_t i = 0; i < nh; i++)
+        start[m->tri[i] + 1]++;
+    for (size_t v = 0; v < nv; v++)
+        start[v + 1] += start[v];
     for (size_t i = 0; i < nh; i++) {
         uint32_t v = m->tri[i];
         const double *a = m->xyz + 3 * v, *b = m->xyz + 3 * m->tri[3 * (i / 3) + (i + 1) % 3];
@@ -109,7 +112,8 @@ fl_status g1_repair_normals(const fl_mesh *m, double *normals, size_t *repairs,
         h[v] = fmax(h[v], sqrt(g1_dot(d, d))); /* lifts v + h n clear of rounding */
         star[start[v]++] = (uint32_t)i;
     }
-    for (size_t v = nv; v > 0; v--) start[v] = start[v - 1];
+    for (size_t v = nv; v > 0; v--)
+        start[v] = start[v - 1];
     start[0] = 0;
     *repairs = *failures = 0;
     for (uint32_t v = 0; v < nv; v++) {

@@ -46,7 +46,7 @@ fl_status g1_require_closed_mesh(const fl_mesh *mesh, fl_error *err);
 
 /* Alters the normals of vertices whose star does not project one-to-one on the tangent plane
  * (the orientation condition of §9.6, see normals.c); counts the repairs and the failures. */
-fl_status g1_repair_normals(const fl_mesh *mesh, double *normals, size_t *repairs,
-                            size_t *failures, fl_error *err);
+fl_status g1_repair_normals(const fl_mesh *mesh, double *normals, size_t *repairs, size_t *failures,
+                            fl_error *err);
 
 #endif /* FL_SMOOTH_INTERNAL_H */

@@ -8,7 +8,10 @@
 
 /* Position of b_ijk (k = n - i - j) in a degree-n net listed by i descending, then j
  * descending: b300 b210 b201 b120 b111 b102 b030 b021 b012 b003 for n = 3. */
-static int net_index(int n, int i, int j) { return (n - i) * (n - i + 1) / 2 + (n - i - j); }
+static int net_index(int n, int i, int j)
+{
+    return (n - i) * (n - i + 1) / 2 + (n - i - j);
+}
 
 void fl_g1_patch_eval(const double *ctrl, double u, double v, double w, double point[3],
                       double normal[3])
@@ -26,7 +29,8 @@ void fl_g1_patch_eval(const double *ctrl, double u, double v, double w, double p
     }
     /* a[0] = b100, a[1] = b010, a[2] = b001 of the linear stage: the tangent plane there. */
     if (point)
-        for (int d = 0; d < 3; d++) point[d] = u * a[0][d] + v * a[1][d] + w * a[2][d];
+        for (int d = 0; d < 3; d++)
+            point[d] = u * a[0][d] + v * a[1][d] + w * a[2][d];
     if (normal) {
         double e1[3], e2[3];
         g1_sub(a[0], a[2], e1);
@@ -54,7 +58,8 @@ static void edge_point(const double *p, const double *n, const double *q, double
     double d[3];
     g1_sub(q, p, d);
     double s = g1_dot(d, n);
-    for (int k = 0; k < 3; k++) out[k] = p[k] + tension * (d[k] - s * n[k]);
+    for (int k = 0; k < 3; k++)
+        out[k] = p[k] + tension * (d[k] - s * n[k]);
 }
 
 /* The two inner control points of the boundary curve along half-edge h: p[0] next to its
@@ -83,7 +88,8 @@ static int quadratic_edge(const double *a, const double *na, const double *b, co
     g1_sub(b, qs, t1);
     double r0 = g1_dot(na, t0), r1 = g1_dot(nb, t1), det = m00 * m11 - m01 * m01;
     double x = (r0 * m11 - r1 * m01) / det, y = (m00 * r1 - m01 * r0) / det, q[3];
-    for (int d = 0; d < 3; d++) q[d] = qs[d] + x * na[d] + y * nb[d];
+    for (int d = 0; d < 3; d++)
+        q[d] = qs[d] + x * na[d] + y * nb[d];
     g1_sub(b, a, ab);
     double len2 = g1_dot(ab, ab);
     g1_sub(q, a, t0);
@@ -131,7 +137,8 @@ static void macro_patch(const fl_mesh *m, const edge_ctrl *ep, size_t t, macro_n
             sum_v[d] += m->xyz[3 * a + d];
         }
     }
-    for (int d = 0; d < 3; d++) net->c111[d] = sum_e[d] / 4 - sum_v[d] / 6; /* step 3 */
+    for (int d = 0; d < 3; d++)
+        net->c111[d] = sum_e[d] / 4 - sum_v[d] / 6; /* step 3 */
     for (int k = 0; k < 3; k++) {
         const double *p = m->xyz + 3 * v[k];
         for (int d = 0; d < 3; d++) {
@@ -307,7 +314,12 @@ static size_t solve_macro_edges(const fl_mesh *m, const double *normals, macro_n
         macro_net *P = nets + t, *Q = nets + u;
         uint32_t a = m->tri[h], b = m->tri[3 * t + (size_t)k1];
         edge_frame q = {{m->xyz + 3 * a, P->e[k][0], P->e[k][1], m->xyz + 3 * b},
-                        P->w[k], P->w[k1], Q->w[j1], Q->w[j], normals + 3 * a, normals + 3 * b};
+                        P->w[k],
+                        P->w[k1],
+                        Q->w[j1],
+                        Q->w[j],
+                        normals + 3 * a,
+                        normals + 3 * b};
         double cond = 0;
         int r = solve_edge(&q, P->x[k], Q->x[j], &cond);
         if (r < 0) *unsolvable = 1;
@@ -333,12 +345,14 @@ static fl_status three_split_nets(const fl_mesh *m, const double *normals, doubl
     int unsolvable = 0;
     for (int round = 0; round < 8; round++) {
         boundary_curves(m, normals, tension, opp, quad, ep);
-        for (size_t t = 0; t < m->triangle_count; t++) macro_patch(m, ep, t, nets + t);
+        for (size_t t = 0; t < m->triangle_count; t++)
+            macro_patch(m, ep, t, nets + t);
         unsolvable = 0;
         if (!solve_macro_edges(m, normals, nets, opp, quad, s, &unsolvable)) break;
     }
     s->quadratic_edges = 0;
-    for (size_t h = 0; h < 3 * m->triangle_count; h++) s->quadratic_edges += quad[h];
+    for (size_t h = 0; h < 3 * m->triangle_count; h++)
+        s->quadratic_edges += quad[h];
     free(quad);
     if (unsolvable)
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
@@ -368,8 +382,9 @@ static fl_status build(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_s
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     s->node_count = split ? nv + nt : nv;
     fl_status st = fl_g1_vertex_normals(m, o->weighting, s->normal, err);
-    if (!st) st = g1_repair_normals(m, s->normal, &s->orientation_repairs,
-                                    &s->orientation_failures, err);
+    if (!st)
+        st =
+            g1_repair_normals(m, s->normal, &s->orientation_repairs, &s->orientation_failures, err);
     if (st) return st;
     double tension = o->tension > 0 ? o->tension : 1.0 / 3.0;
     macro_net *nets = fl_alloc_array(nt, sizeof *nets);
@@ -385,7 +400,8 @@ static fl_status build(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_s
         if (!st) st = three_split_nets(m, s->normal, tension, opp, ep, nets, s, err);
     } else {
         boundary_curves(m, s->normal, tension, NULL, NULL, ep);
-        for (size_t t = 0; t < nt; t++) macro_patch(m, ep, t, nets + t);
+        for (size_t t = 0; t < nt; t++)
+            macro_patch(m, ep, t, nets + t);
     }
     for (size_t t = 0; !st && t < nt; t++) {
         if (split)

@@ -17,7 +17,8 @@ typedef struct edge_map {
 static int edge_map_init(edge_map *e, size_t entries)
 {
     size_t cap = 16;
-    while (cap < 2 * entries) cap *= 2;
+    while (cap < 2 * entries)
+        cap *= 2;
     e->key = fl_alloc_array(cap, sizeof *e->key);
     e->value = fl_alloc_array(cap, sizeof *e->value);
     e->mask = cap - 1;
@@ -30,7 +31,8 @@ static int edge_map_init(edge_map *e, size_t entries)
 static size_t edge_map_slot(const edge_map *e, uint64_t key)
 {
     size_t i = (size_t)((key * 0x9E3779B97F4A7C15ULL) >> 20) & e->mask;
-    while (e->key[i] != key && e->key[i] != UINT64_MAX) i = (i + 1) & e->mask;
+    while (e->key[i] != key && e->key[i] != UINT64_MAX)
+        i = (i + 1) & e->mask;
     return i;
 }
 
@@ -145,7 +147,8 @@ fl_status fl_g1_surface_tessellate(const fl_g1_surface *surface, unsigned densit
     uint32_t *local = fl_alloc_array(local_index(density, density, 0) + 1, sizeof *local);
     int bad = !t.node_vertex || !local || edge_map_init(&t.edges, 3 * surface->patch_count);
     if (!bad) memset(t.node_vertex, 0xff, surface->node_count * sizeof(uint32_t));
-    for (size_t p = 0; !bad && p < surface->patch_count; p++) bad = tessellate_patch(&t, p, local);
+    for (size_t p = 0; !bad && p < surface->patch_count; p++)
+        bad = tessellate_patch(&t, p, local);
     free(local);
     free(t.node_vertex);
     free(t.edges.key);

@@ -42,7 +42,8 @@ static inline uint32_t g1_mid(double *v, uint32_t *nv, uint32_t *key, uint32_t *
     for (uint32_t i = 0; key[2 * i] != UINT32_MAX; i++)
         if (key[2 * i] == lo && key[2 * i + 1] == hi) return val[i];
     uint32_t i = 0;
-    while (key[2 * i] != UINT32_MAX) i++;
+    while (key[2 * i] != UINT32_MAX)
+        i++;
     key[2 * i] = lo;
     key[2 * i + 1] = hi;
     key[2 * i + 2] = UINT32_MAX;
@@ -51,7 +52,8 @@ static inline uint32_t g1_mid(double *v, uint32_t *nv, uint32_t *key, uint32_t *
         p[d] = (v[3 * a + d] + v[3 * b + d]) / 2;
         s += p[d] * p[d];
     }
-    for (int d = 0; d < 3; d++) p[d] /= sqrt(s);
+    for (int d = 0; d < 3; d++)
+        p[d] /= sqrt(s);
     return val[i] = (*nv)++;
 }
 
@@ -60,20 +62,23 @@ static inline uint32_t g1_mid(double *v, uint32_t *nv, uint32_t *key, uint32_t *
 static inline fl_mesh g1_icosphere(int levels, double jitter, unsigned long long seed)
 {
     const double g = (1 + sqrt(5.0)) / 2;
-    double base[] = {-1, g, 0, 1, g, 0, -1, -g, 0, 1, -g, 0, 0, -1, g, 0, 1, g,
-                     0, -1, -g, 0, 1, -g, g, 0, -1, g, 0, 1, -g, 0, -1, -g, 0, 1};
-    static const uint32_t ico[] = {0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11,
-                                   1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8,
-                                   3, 9, 4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9,
-                                   4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1};
+    double base[] = {-1, g,  0,  1, g, 0,  -1, -g, 0,  1, -g, 0, 0,  -1, g,  0,  1, g,
+                     0,  -1, -g, 0, 1, -g, g,  0,  -1, g, 0,  1, -g, 0,  -1, -g, 0, 1};
+    static const uint32_t ico[] = {0, 11, 5, 0, 5,  1,  0,  1,  7,  0,  7, 10, 0, 10, 11,
+                                   1, 5,  9, 5, 11, 4,  11, 10, 2,  10, 7, 6,  7, 1,  8,
+                                   3, 9,  4, 3, 4,  2,  3,  2,  6,  3,  6, 8,  3, 8,  9,
+                                   4, 9,  5, 2, 4,  11, 6,  2,  10, 8,  6, 7,  9, 8,  1};
     size_t maxv = 12, maxt = 20;
-    for (int l = 0; l < levels; l++) maxv += maxt * 3 / 2, maxt *= 4;
+    for (int l = 0; l < levels; l++)
+        maxv += maxt * 3 / 2, maxt *= 4;
     double *v = malloc(maxv * 3 * sizeof(double));
     uint32_t *t = malloc(maxt * 3 * sizeof(uint32_t)), *t2 = malloc(maxt * 3 * sizeof(uint32_t));
-    uint32_t *key = malloc((maxv * 2 + 2) * sizeof(uint32_t)), *val = malloc(maxv * sizeof(uint32_t));
+    uint32_t *key = malloc((maxv * 2 + 2) * sizeof(uint32_t)),
+             *val = malloc(maxv * sizeof(uint32_t));
     for (int i = 0; i < 12; i++) {
         double s = sqrt(1 + g * g);
-        for (int d = 0; d < 3; d++) v[3 * i + d] = base[3 * i + d] / s;
+        for (int d = 0; d < 3; d++)
+            v[3 * i + d] = base[3 * i + d] / s;
     }
     memcpy(t, ico, sizeof ico);
     uint32_t nv = 12, nt = 20;

@@ -21,7 +21,8 @@ static inline double g1_angle_deg(const double *a, const double *b)
 {
     double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     return atan2(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]),
-                 a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) * 57.295779513082320876798;
+                 a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) *
+           57.295779513082320876798;
 }
 
 static inline void g1_edge_point(const fl_g1_surface *s, uint32_t pe, double t, double in,
@@ -70,7 +71,8 @@ static inline double g1_max_edge_jump(const fl_g1_surface *s, int samples, size_
             double ta[3], tb[3], c[3];
             g1_edge_point(s, a, t + 1e-6, 0, ta, NULL);
             g1_edge_point(s, a, t - 1e-6, 0, tb, NULL);
-            for (int d = 0; d < 3; d++) ta[d] -= tb[d];
+            for (int d = 0; d < 3; d++)
+                ta[d] -= tb[d];
             c[0] = na[1] * ta[2] - na[2] * ta[1];
             c[1] = na[2] * ta[0] - na[0] * ta[2];
             c[2] = na[0] * ta[1] - na[1] * ta[0];
@@ -102,8 +104,10 @@ static inline void g1_pn_control_points(const double *p1, const double *p2, cons
         for (int j = 0; j < 3; j++) {
             if (i == j) continue;
             double w = 0;
-            for (int d = 0; d < 3; d++) w += (P[j][d] - P[i][d]) * N[i][d];
-            for (int d = 0; d < 3; d++) b[i][j][d] = (2 * P[i][d] + P[j][d] - w * N[i][d]) / 3;
+            for (int d = 0; d < 3; d++)
+                w += (P[j][d] - P[i][d]) * N[i][d];
+            for (int d = 0; d < 3; d++)
+                b[i][j][d] = (2 * P[i][d] + P[j][d] - w * N[i][d]) / 3;
         }
     double E[3] = {0, 0, 0}, V[3];
     for (int d = 0; d < 3; d++) {
@@ -112,8 +116,8 @@ static inline void g1_pn_control_points(const double *p1, const double *p2, cons
                 if (i != j) E[d] += b[i][j][d] / 6;
         V[d] = (p1[d] + p2[d] + p3[d]) / 3;
     }
-    const double *order[10] = {p1,         b[0][1], b[0][2], b[1][0], NULL,
-                               b[2][0],    p2,      b[1][2], b[2][1], p3};
+    const double *order[10] = {p1,      b[0][1], b[0][2], b[1][0], NULL,
+                               b[2][0], p2,      b[1][2], b[2][1], p3};
     for (int k = 0; k < 10; k++)
         for (int d = 0; d < 3; d++)
             out[3 * k + d] = order[k] ? order[k][d] : E[d] + (E[d] - V[d]) / 2;

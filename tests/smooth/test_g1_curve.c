@@ -4,8 +4,8 @@
 
 static fl_polygon star_polygon(unsigned long long seed, size_t n)
 {
-    fl_polygon p = {n, malloc(2 * n * sizeof(double)), 1, malloc(2 * sizeof(size_t)), 1,
-                    malloc(2 * sizeof(size_t))};
+    fl_polygon p = {n, malloc(2 * n * sizeof(double)), 1, malloc(2 * sizeof(size_t)),
+                    1, malloc(2 * sizeof(size_t))};
     for (size_t i = 0; i < n; i++) {
         double a = 6.283185307179586 * ((double)i + 0.8 * fl_test_rand01(&seed)) / (double)n;
         double r = 0.3 + fl_test_rand01(&seed);
@@ -40,8 +40,8 @@ static void check_curve(const fl_polygon *p, int weighting, size_t *repairs)
             CHECK(c.ctrl[8 * i + 6] == p->xy[2 * next] && c.ctrl[8 * i + 7] == p->xy[2 * next + 1]);
             double cross = da[0] * db[1] - da[1] * db[0], dot = da[0] * db[0] + da[1] * db[1];
             double na = hypot(da[0], da[1]), nb = hypot(db[0], db[1]);
-            CHECK_MSG(fabs(cross) <= 1e-12 * na * nb && dot > 0, "vertex %zu: cross %g dot %g",
-                      i, cross / (na * nb), dot);
+            CHECK_MSG(fabs(cross) <= 1e-12 * na * nb && dot > 0, "vertex %zu: cross %g dot %g", i,
+                      cross / (na * nb), dot);
         }
     }
     fl_polygon s;
@@ -58,11 +58,13 @@ static void test_g1_curves_interpolate_and_are_tangent_continuous(void)
     fl_error err;
     CHECK_STATUS(fl_read_polygon(FL_SOURCE_DIR "/data/demo/leaf.xy", &leaf, &err), FL_OK, &err);
     size_t repairs = 0;
-    for (int w = 0; w <= 3; w++) check_curve(&leaf, w, &repairs);
+    for (int w = 0; w <= 3; w++)
+        check_curve(&leaf, w, &repairs);
     fl_polygon_free(&leaf);
     for (unsigned long long seed = 1; seed <= 50; seed++) {
         fl_polygon p = star_polygon(seed, 5 + seed % 40);
-        for (int w = 0; w <= 3; w++) check_curve(&p, w, &repairs);
+        for (int w = 0; w <= 3; w++)
+            check_curve(&p, w, &repairs);
         fl_polygon_free(&p);
     }
 }
@@ -115,7 +117,8 @@ static void test_g1_curve_svg_has_one_cubic_a_segment(void)
     CHECK_STATUS(fl_g1_curve_write_svg("g1_curve_test.svg", &c, &err), FL_OK, &err);
     FILE *f = fopen("g1_curve_test.svg", "r");
     int cubics = 0, ch;
-    while (f && (ch = fgetc(f)) != EOF) cubics += ch == 'C';
+    while (f && (ch = fgetc(f)) != EOF)
+        cubics += ch == 'C';
     if (f) fclose(f);
     CHECK_EQ_INT(cubics, 12);
     remove("g1_curve_test.svg");

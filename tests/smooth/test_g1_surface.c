@@ -9,10 +9,14 @@ static fl_mesh test_mesh(int i)
     fl_mesh m = {0};
     fl_error err;
     switch (i) {
-    case 0: return g1_octahedron();
-    case 1: return g1_cube();
-    case 2: return g1_icosphere(1, 0, 1);
-    case 3: return g1_icosphere(2, 0.02, 7);
+    case 0:
+        return g1_octahedron();
+    case 1:
+        return g1_cube();
+    case 2:
+        return g1_icosphere(1, 0, 1);
+    case 3:
+        return g1_icosphere(2, 0.02, 7);
     default:
         CHECK_STATUS(fl_read_mesh(FL_SOURCE_DIR "/data/demo/torus.off", &m, &err), FL_OK, &err);
         return m;
@@ -31,11 +35,13 @@ static void oracle_normals(const fl_mesh *m, double *n)
         double x[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
                        u[0] * v[1] - u[1] * v[0]};
         for (int k = 0; k < 3; k++)
-            for (int d = 0; d < 3; d++) n[3 * m->tri[3 * t + k] + d] += x[d];
+            for (int d = 0; d < 3; d++)
+                n[3 * m->tri[3 * t + k] + d] += x[d];
     }
     for (size_t i = 0; i < m->vertex_count; i++) {
         double *p = n + 3 * i, l = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-        for (int d = 0; d < 3; d++) p[d] /= l;
+        for (int d = 0; d < 3; d++)
+            p[d] /= l;
     }
 }
 
@@ -66,8 +72,8 @@ static void test_g1_surfaces_interpolate_vertices_and_normals_to_1e12(void)
                     corners++;
                 }
             CHECK_EQ_INT(s.orientation_repairs, 0);
-            CHECK_MSG(verr <= 1e-12 && nerr <= 1e-12, "mesh %d scheme %d: %g %g", i, scheme,
-                      verr, nerr);
+            CHECK_MSG(verr <= 1e-12 && nerr <= 1e-12, "mesh %d scheme %d: %g %g", i, scheme, verr,
+                      nerr);
             CHECK(corners >= m.vertex_count);
             free(n);
             fl_g1_surface_free(&s);
@@ -110,9 +116,9 @@ static void test_g1_macro_scheme_is_pn_triangles_and_only_c0(void)
         for (size_t t = 0; t < m.triangle_count; t++) {
             const uint32_t *v = m.tri + 3 * t;
             g1_pn_control_points(m.xyz + 3 * v[0], m.xyz + 3 * v[1], m.xyz + 3 * v[2],
-                                 s.normal + 3 * v[0], s.normal + 3 * v[1], s.normal + 3 * v[2],
-                                 pn);
-            for (int k = 0; k < 30; k++) worst = fmax(worst, fabs(pn[k] - s.ctrl[30 * t + k]));
+                                 s.normal + 3 * v[0], s.normal + 3 * v[1], s.normal + 3 * v[2], pn);
+            for (int k = 0; k < 30; k++)
+                worst = fmax(worst, fabs(pn[k] - s.ctrl[30 * t + k]));
         }
         CHECK_MSG(worst < 1e-14, "mesh %d: macro patch differs from PN by %g", i, worst);
         size_t flips, unpaired;
@@ -143,7 +149,8 @@ static void test_g1_tessellation_is_closed_manifold_and_keeps_genus(void)
         if (i != 4) CHECK_EQ_INT(r.self_intersections, 0);
         CHECK_EQ_INT(tm.triangle_count, s.patch_count * density * density);
         /* Euler: V = F/2 + 2 - 2g */
-        CHECK_EQ_INT((long long)tm.vertex_count, (long long)tm.triangle_count / 2 + 2 - 2 * r0.genus);
+        CHECK_EQ_INT((long long)tm.vertex_count,
+                     (long long)tm.triangle_count / 2 + 2 - 2 * r0.genus);
         /* every normal is a unit vector facing away from the inside of its triangles */
         double worst = 0;
         for (size_t v = 0; v < tm.vertex_count; v++)
@@ -167,7 +174,8 @@ static void test_g1_vertex_normal_weightings(void)
     fl_error err;
     for (int w = 0; w <= 3; w++) {
         CHECK_STATUS(fl_g1_vertex_normals(&m, w, n, &err), FL_OK, &err);
-        for (int i = 0; i < 18; i++) CHECK_NEAR(n[i], m.xyz[i], 1e-15);
+        for (int i = 0; i < 18; i++)
+            CHECK_NEAR(n[i], m.xyz[i], 1e-15);
     }
     fl_mesh_free(&m);
     /* Cube corner (0,0,0): two triangles on each face; area weighting weighs each face by its
@@ -190,10 +198,12 @@ static void test_g1_vertex_normal_weightings(void)
                 double c[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
                                e1[0] * e2[1] - e1[1] * e2[0]};
                 double l = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
-                for (int d = 0; d < 3; d++) expect[d] += c[d] / l; /* uniform: unit normals */
+                for (int d = 0; d < 3; d++)
+                    expect[d] += c[d] / l; /* uniform: unit normals */
             }
     double l = sqrt(expect[0] * expect[0] + expect[1] * expect[1] + expect[2] * expect[2]);
-    for (int d = 0; d < 3; d++) CHECK_NEAR(u[d], expect[d] / l, 1e-15);
+    for (int d = 0; d < 3; d++)
+        CHECK_NEAR(u[d], expect[d] / l, 1e-15);
     /* all triangles of the cube have the same area: the three weightings coincide */
     for (int i = 0; i < 24; i++) {
         CHECK_NEAR(a[i], u[i], 1e-15);

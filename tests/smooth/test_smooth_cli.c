@@ -13,10 +13,12 @@ static double json_number(const char *json, const char *key)
 static void test_smooth_cli_mesh_json_and_watertight_output(void)
 {
     cli_result r;
-    cli_write_file("smooth_cli_octa.off", "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
-                                          "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n"
-                                          "3 3 1 5\n3 0 3 5\n");
-    CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_octa.off --tess 5 -o smooth_cli_out.off --json"), 0);
+    cli_write_file("smooth_cli_octa.off",
+                   "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                   "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n"
+                   "3 3 1 5\n3 0 3 5\n");
+    CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_octa.off --tess 5 -o smooth_cli_out.off --json"),
+                 0);
     CHECK_EQ_INT(json_number(r.out, "patches"), 24);
     CHECK(json_number(r.out, "max_vertex_error") <= 1e-12);
     CHECK(json_number(r.out, "max_normal_error") <= 1e-12);
@@ -50,7 +52,8 @@ static void test_smooth_cli_polygon_outputs(void)
     cli_result r;
     cli_write_file("smooth_cli_sq.xy", "0 0\n2 0\n2 1\n0 1\n");
     CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_sq.xy --tangents uniform --samples 5 "
-                             "-o smooth_cli_sq_out.xy --json"), 0);
+                             "-o smooth_cli_sq_out.xy --json"),
+                 0);
     CHECK_EQ_INT(json_number(r.out, "segments"), 4);
     CHECK(json_number(r.out, "max_tangent_jump_deg") < 1e-9);
     fl_polygon p;

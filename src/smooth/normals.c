@@ -53,6 +53,14 @@ static int star_ok(const fl_mesh *m, uint32_t v, const uint32_t *star, size_t n_
         int k = (int)(star[s] % 3);
         const double *a = m->xyz + 3 * t[(k + 1) % 3], *b = m->xyz + 3 * t[(k + 2) % 3];
         if (fl_orient3d(p, a, b, q) >= 0) return 0; /* q not strictly above (v, a, b) */
+        /* The exact sign is on the rounded q; a triangle seen almost edge-on also projects
+         * onto (nearly) a segment, which makes eq. 9.3a degenerate, so ask for a margin:
+         * the normal at least 1e-6 radians off the triangle's plane. */
+        double ea[3], eb[3], c[3];
+        g1_sub(a, p, ea);
+        g1_sub(b, p, eb);
+        g1_cross(ea, eb, c);
+        if (!(g1_dot(c, n) > 1e-6 * sqrt(g1_dot(c, c)))) return 0;
     }
     return 1;
 }

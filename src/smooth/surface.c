@@ -95,6 +95,15 @@ static int quadratic_edge(const double *a, const double *na, const double *b, co
     g1_sub(q, a, t0);
     double along = g1_dot(t0, ab) / len2;
     if (!(along > 0.05 && along < 0.95) || g1_dot(t0, t0) > 4 * len2) return 0;
+    /* The new tangent directions must stay close to the projected edges (within ~18
+     * degrees), or the vertex stars that made the orientation condition hold could fold. */
+    double o0[3], o1[3], q1[3];
+    g1_sub(cubic->p[0], a, o0);
+    g1_sub(cubic->p[1], b, o1);
+    g1_sub(q, b, q1);
+    if (!(g1_dot(t0, o0) > 0.95 * sqrt(g1_dot(t0, t0) * g1_dot(o0, o0))) ||
+        !(g1_dot(q1, o1) > 0.95 * sqrt(g1_dot(q1, q1) * g1_dot(o1, o1))))
+        return 0;
     for (int d = 0; d < 3; d++) {
         out->p[0][d] = (a[d] + 2 * q[d]) / 3;
         out->p[1][d] = (2 * q[d] + b[d]) / 3;

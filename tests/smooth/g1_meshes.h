@@ -105,4 +105,50 @@ static inline fl_mesh g1_icosphere(int levels, double jitter, unsigned long long
     return m;
 }
 
+/* The surface of the cube [0, n]^3 with every face an n x n grid of squares, each split by a
+ * diagonal (all in one direction), like CGAL's cube-meshed.off: flat regions, and vertices on
+ * cube edges whose stars are seen almost edge-on. */
+static inline fl_mesh g1_meshed_cube(int n)
+{
+    size_t side = (size_t)n + 1, nv = 0, nt = 0;
+    uint32_t *id = malloc(side * side * side * sizeof(uint32_t));
+    double *v = malloc(side * side * side * 3 * sizeof(double));
+    uint32_t *t = malloc((size_t)12 * n * n * 3 * sizeof(uint32_t));
+    for (size_t i = 0; i < side * side * side; i++)
+        id[i] = UINT32_MAX;
+    for (int axis = 0; axis < 3; axis++)
+        for (int hi = 0; hi < 2; hi++)
+            for (int i = 0; i < n; i++)
+                for (int j = 0; j < n; j++) {
+                    uint32_t q[4];
+                    for (int c = 0; c < 4; c++) {
+                        int g[3], u = i + (c == 1 || c == 2), w = j + (c >= 2);
+                        g[axis] = hi * n;
+                        g[(axis + 1) % 3] = u;
+                        g[(axis + 2) % 3] = w;
+                        size_t key = ((size_t)g[0] * side + (size_t)g[1]) * side + (size_t)g[2];
+                        if (id[key] == UINT32_MAX) {
+                            for (int d = 0; d < 3; d++)
+                                v[3 * nv + d] = g[d];
+                            id[key] = (uint32_t)nv++;
+                        }
+                        q[c] = id[key];
+                    }
+                    /* (u, w) axes are counter-clockwise seen from +axis; flip on the low side */
+                    uint32_t a[6] = {q[0], q[1], q[2], q[0], q[2], q[3]};
+                    if (!hi) {
+                        uint32_t x = a[1];
+                        a[1] = a[2], a[2] = x;
+                        x = a[4], a[4] = a[5], a[5] = x;
+                    }
+                    memcpy(t + 3 * nt, a, sizeof a);
+                    nt += 2;
+                }
+    fl_mesh m = g1_mesh_from(v, nv, t, nt);
+    free(id);
+    free(v);
+    free(t);
+    return m;
+}
+
 #endif /* FL_TEST_G1_MESHES_H */

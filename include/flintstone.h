@@ -1135,7 +1135,9 @@ fl_status fl_g1_vertex_normals(const fl_mesh *mesh, int weighting, double *norma
 
 /* Surface schemes. */
 typedef enum fl_g1_scheme {
-    FL_G1_THREE_SPLIT = 0, /* §9.6: three cubic micro patches a triangle, G1 when repairs = 0 */
+    FL_G1_THREE_SPLIT = 0, /* §9.6: three cubic micro patches a triangle; G1 to rounding on
+                            * smooth meshes, not on every coarse one: measure it with
+                            * fl_g1_surface_measure (docs/smooth.md has the numbers) */
     FL_G1_MACRO = 1        /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
 } fl_g1_scheme;
 
@@ -1164,8 +1166,8 @@ typedef struct fl_g1_surface {
     size_t orientation_repairs; /* vertex normals altered so that the G1 orientation condition
                                  * holds on every incident edge (§9.6: f, g of eq. 9.3 of the
                                  * right signs; decided exactly by fl_orient3d) */
-    size_t orientation_failures; /* vertices where no repair was found (surface only G1 up to
-                                  * orientation there); 0 on every mesh we tested */
+    size_t orientation_failures; /* vertices where no repair was found (the surface folds
+                                  * there), e.g. 3 on CGAL's hand.off */
     size_t singular_edges;      /* macro edges where eq. 9.4 was dependent and the minimal
                                  * displacement solution was taken */
     size_t quadratic_edges;     /* macro edges whose boundary curve was made a degree-raised

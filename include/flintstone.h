@@ -1351,6 +1351,161 @@ fl_status fl_svg_write(const fl_svg *svg, const char *path, fl_error *err);
 
 /* end of render */
 
+/* ==== smooth ============================================================================== */
+/* (section owned by src/smooth; docs/smooth.md)
+ *
+ * G1 (tangent-continuous) boundaries through the vertices of a polygon or a closed triangle
+ * mesh, after Veltkamp's thesis ch. 8-9: estimated tangents/normals (§9.2, §9.4), cubic Bézier
+ * curve segments by the projection heuristic (§9.2), and cubic Bézier triangle surfaces by the
+ * three-split scheme (§9.6, Clough-Tocher split with eq. 9.4 across macro edges). The macro
+ * patches of steps 1-3 alone are, with the default tension, exactly Vlachos et al.'s PN
+ * triangles (only C0 across edges); they are available as a baseline scheme. */
+
+/* How the unit vectors of the neighbouring edges (curves) or triangles (surfaces) are weighted
+ * in a tangent or normal estimate (§9.2 methods 1-3, §9.4 methods 1-3). */
+typedef enum fl_g1_weighting {
+    FL_G1_WEIGHT_DEFAULT = 0, /* by length (curves), by area (surfaces): the thesis's choice */
+    FL_G1_WEIGHT_SIZE = 1,    /* by edge length / triangle area */
+    FL_G1_WEIGHT_UNIFORM = 2, /* unit vectors summed */
+    FL_G1_WEIGHT_INVERSE = 3  /* by inverse length / inverse area */
+} fl_g1_weighting;
+
+/* Curve options; all zero is the default. */
+typedef struct fl_g1_curve_options {
+    int weighting;  /* fl_g1_weighting */
+    double tension; /* fraction of the projected chord for the inner control points; 0 = 1/3 */
+} fl_g1_curve_options;
+
+/* A closed G1 curve of cubic Bézier segments through every vertex of every ring. Segment i
+ * (one a vertex, in the polygon's vertex order) runs from vertex i to the next vertex of its
+ * ring; its control points are ctrl[8i .. 8i+7] = p0, p1, p2, p3 (x, y each), p0 and p3 the
+ * vertices. tangent[2i..2i+1] is the unit tangent used at vertex i. ring_start and
+ * polygon_start copy the polygon's structure. */
+typedef struct fl_g1_curve {
+    size_t vertex_count;
+    double *ctrl;
+    double *tangent;
+    size_t ring_count;
+    size_t *ring_start;
+    size_t polygon_count;
+    size_t *polygon_start;
+    size_t orientation_repairs; /* vertices whose tangent failed the G1 orientation condition
+                                 * (§9.2: projections on the same side) and was replaced by the
+                                 * uniform (bisector) tangent, which always satisfies it */
+} fl_g1_curve;
+
+/* Builds the G1 curve of every ring of `polygon` (each ring at least 3 vertices, finite
+ * coordinates, no two consecutive vertices equal, no ring turning back on itself by 180
+ * degrees at a vertex). FL_ERR_INPUT otherwise, FL_ERR_USAGE for bad options, FL_ERR_NOMEM.
+ * On failure *out is zeroed. Free with fl_g1_curve_free. */
+fl_status fl_g1_curve_build(const fl_polygon *polygon, const fl_g1_curve_options *opt,
+                            fl_g1_curve *out, fl_error *err);
+void fl_g1_curve_free(fl_g1_curve *curve);
+
+/* Point and first derivative of segment i at parameter s in [0, 1] (either may be NULL). */
+void fl_g1_curve_eval(const fl_g1_curve *curve, size_t segment, double s, double point[2],
+                      double derivative[2]);
+
+/* The curve sampled as polygons: `per_segment` (>= 1) points a segment (its start vertex
+ * first), same ring and polygon structure. Free with fl_polygon_free. */
+fl_status fl_g1_curve_sample(const fl_g1_curve *curve, size_t per_segment, fl_polygon *out,
+                             fl_error *err);
+
+/* Writes the curve as an SVG picture, one path of cubic Béziers ("M ... C ... Z") a ring,
+ * atomically. FL_ERR_IO. */
+fl_status fl_g1_curve_write_svg(const char *path, const fl_g1_curve *curve, fl_error *err);
+
+/* Unit vertex normals of a closed oriented mesh (§9.4), weighted by `weighting`, outward for
+ * counter-clockwise triangles; normals has 3*vertex_count doubles. A vertex whose weighted
+ * sum vanishes (or that no triangle uses) gets FL_ERR_INPUT. */
+fl_status fl_g1_vertex_normals(const fl_mesh *mesh, int weighting, double *normals,
+                               fl_error *err);
+
+/* Surface schemes. */
+typedef enum fl_g1_scheme {
+    FL_G1_THREE_SPLIT = 0, /* §9.6: three cubic micro patches a triangle; G1 to rounding on
+                            * smooth meshes, not on every coarse one: measure it with
+                            * fl_g1_surface_measure (docs/smooth.md has the numbers) */
+    FL_G1_MACRO = 1        /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
+} fl_g1_scheme;
+
+/* Surface options; all zero is the default. */
+typedef struct fl_g1_surface_options {
+    int scheme;     /* fl_g1_scheme */
+    int weighting;  /* fl_g1_weighting of the normal estimate */
+    double tension; /* step 2: fraction of the projected edge for the edge control points;
+                     * 0 = 1/3 (the thesis's value) */
+} fl_g1_surface_options;
+
+/* A piecewise cubic Bézier triangle surface. Patch p has 10 control points ctrl[30p .. 30p+29]
+ * in the order b300 b210 b201 b120 b111 b102 b030 b021 b012 b003 (b_ijk weights corner 0 by
+ * i, corner 1 by j, corner 2 by k); its corners are the nodes corner[3p..3p+2],
+ * counter-clockwise seen from outside. Node n < vertex_count is mesh vertex n; node
+ * vertex_count + t is the split point of macro triangle t. macro[p] is the mesh triangle the
+ * patch belongs to. Patches sharing an edge share its two end nodes. */
+typedef struct fl_g1_surface {
+    size_t patch_count;
+    double *ctrl;
+    uint32_t *corner;
+    uint32_t *macro;
+    size_t node_count;
+    size_t vertex_count;
+    double *normal;             /* 3*vertex_count: the vertex normals interpolated */
+    size_t orientation_repairs; /* vertex normals altered so that the G1 orientation condition
+                                 * holds on every incident edge (§9.6: f, g of eq. 9.3 of the
+                                 * right signs; decided exactly by fl_orient3d) */
+    size_t orientation_failures; /* vertices where no repair was found (the surface folds
+                                  * there), e.g. 3 on CGAL's hand.off */
+    size_t singular_edges;      /* macro edges where eq. 9.4 was dependent and the minimal
+                                 * displacement solution was taken */
+    size_t quadratic_edges;     /* macro edges whose boundary curve was made a degree-raised
+                                 * quadratic because eq. 9.4 was (nearly) dependent with the
+                                 * thesis's cubic curve (docs/smooth.md) */
+} fl_g1_surface;
+
+/* Builds the surface over a closed, manifold, oriented mesh (fl_mesh_check; else FL_ERR_INPUT
+ * naming what is wrong), interpolating its vertices and estimated normals. O(V + T log T).
+ * FL_ERR_USAGE for bad options, FL_ERR_NOMEM. On failure *out is zeroed. */
+fl_status fl_g1_surface_build(const fl_mesh *mesh, const fl_g1_surface_options *opt,
+                              fl_g1_surface *out, fl_error *err);
+void fl_g1_surface_free(fl_g1_surface *surface);
+
+/* Point and unit normal (either may be NULL) of a cubic Bézier triangle with control points
+ * ctrl[30] (order as above) at barycentric (u, v, w), u + v + w = 1: de Casteljau, the
+ * normal from the cross product of the last stage (exact up to rounding). */
+void fl_g1_patch_eval(const double *ctrl, double u, double v, double w, double point[3],
+                      double normal[3]);
+
+/* Tessellates every patch with `density` (>= 1) segments an edge into one mesh whose vertices
+ * along patch edges are shared, so it is closed when the input was. *normals receives
+ * 3*vertex_count unit normals (malloc'd, free() it). Free out with fl_mesh_free. */
+fl_status fl_g1_surface_tessellate(const fl_g1_surface *surface, unsigned density, fl_mesh *out,
+                                   double **normals, fl_error *err);
+
+/* Measured quality of a surface against the mesh it interpolates. */
+typedef struct fl_g1_metrics {
+    double max_vertex_error;         /* |patch corner - mesh vertex|, max */
+    double max_normal_error;         /* |patch normal at a vertex - estimated normal|, max */
+    double max_edge_normal_jump_deg; /* angle between the two patches' normals, max over
+                                      * `samples` points of every patch edge */
+    size_t orientation_flips;        /* patch edges where the two patches fold onto the same
+                                      * side (G1 orientation violated) at some sample */
+    double max_deviation;            /* max distance of the patch samples from the mesh,
+                                      * divided by the mean edge length */
+} fl_g1_metrics;
+
+/* Measures `surface` built from `mesh` with `samples` (>= 2) points an edge and a grid of the
+ * same density inside each patch for the deviation. FL_ERR_USAGE, FL_ERR_NOMEM. */
+fl_status fl_g1_surface_measure(const fl_g1_surface *surface, const fl_mesh *mesh,
+                                unsigned samples, fl_g1_metrics *out, fl_error *err);
+
+/* The Bézier control nets as text (.bez, docs/formats.md): written atomically; the reader
+ * fills patch_count, ctrl and corner (other fields zero) and reports parse errors by line. */
+fl_status fl_g1_write_bez(const char *path, const fl_g1_surface *surface, fl_error *err);
+fl_status fl_g1_read_bez(const char *path, fl_g1_surface *out, fl_error *err);
+
+/* end of smooth */
+
 
 #ifdef __cplusplus
 }

@@ -23,6 +23,8 @@ static const cli_command commands[] = {
     {"hausdorff", "certified Hausdorff distance between two meshes or polylines", cmd_hausdorff},
     {"render", "pictures: meshes, balls, 3D points to PNG; 2D points and polygons to SVG",
      cmd_render},
+    {"smooth", "G1 cubic Bézier curve or surface through a polygon's or mesh's vertices",
+     cmd_smooth},
     {"version", "print the version", cmd_version},
 };
 

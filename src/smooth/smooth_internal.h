@@ -1,0 +1,52 @@
+/* Helpers shared by the files of src/smooth; not part of the public API. */
+#ifndef FL_SMOOTH_INTERNAL_H
+#define FL_SMOOTH_INTERNAL_H
+
+#include <math.h>
+
+#include "core/core.h"
+
+static inline void g1_sub(const double *a, const double *b, double *r)
+{
+    r[0] = a[0] - b[0];
+    r[1] = a[1] - b[1];
+    r[2] = a[2] - b[2];
+}
+
+static inline double g1_dot(const double *a, const double *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static inline void g1_cross(const double *a, const double *b, double *r)
+{
+    r[0] = a[1] * b[2] - a[2] * b[1];
+    r[1] = a[2] * b[0] - a[0] * b[2];
+    r[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Scales v to unit length; returns its former length. */
+static inline double g1_normalize(double *v)
+{
+    double n = sqrt(g1_dot(v, v));
+    if (n > 0) {
+        v[0] /= n;
+        v[1] /= n;
+        v[2] /= n;
+    }
+    return n;
+}
+
+/* Half-edge 3t+k runs from tri[3t+k] to tri[3t+(k+1)%3]; opp[h] is the half-edge running the
+ * other way. Requires a closed, manifold, oriented mesh (checked by the caller). */
+fl_status g1_opposite_half_edges(const fl_mesh *mesh, uint32_t **opp, fl_error *err);
+
+/* Fails with FL_ERR_INPUT unless the mesh is closed, manifold and oriented, naming the fault. */
+fl_status g1_require_closed_mesh(const fl_mesh *mesh, fl_error *err);
+
+/* Alters the normals of vertices whose star does not project one-to-one on the tangent plane
+ * (the orientation condition of §9.6, see normals.c); counts the repairs and the failures. */
+fl_status g1_repair_normals(const fl_mesh *mesh, double *normals, size_t *repairs, size_t *failures,
+                            fl_error *err);
+
+#endif /* FL_SMOOTH_INTERNAL_H */

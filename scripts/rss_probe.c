@@ -46,7 +46,7 @@ int main(int argc, char **argv)
     if (!c) return fprintf(stderr, "no memory for the input\n"), 3;
     if (strcmp(kind, "rec3") == 0) {
         for (size_t i = 0; i < n; i++) { /* torus R = 2, r = 1: a genus-1 surface sample */
-            double u = 2 * M_PI * rnd(&seed), v = 2 * M_PI * rnd(&seed);
+            double u = 6.283185307179586 * rnd(&seed), v = 6.283185307179586 * rnd(&seed);
             c[3 * i] = (2 + cos(v)) * cos(u), c[3 * i + 1] = (2 + cos(v)) * sin(u);
             c[3 * i + 2] = sin(v);
         }

@@ -119,6 +119,9 @@ static void test_failing_commands_leave_nothing(void)
     }
     free(sq);
     free(poly);
+    static const char *const inputs[] = {"nl_sq.xy", "nl_line.xy", "nl_nan.xyz", "nl_poly.xy",
+                                         "nl_open.off", "nl_q.xyz", "nl_notadir"};
+    for (size_t i = 0; i < sizeof inputs / sizeof *inputs; i++) remove(inputs[i]);
 }
 
 /* Starts the CLI on `args` (split on spaces), waits `ms` milliseconds, SIGKILLs it. Returns 1

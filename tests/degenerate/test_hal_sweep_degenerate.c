@@ -75,6 +75,34 @@ static void test_hal2_degenerate(void)
     fl_hal2_free(&hal);
 }
 
+/* Regression (found by fuzz/fuzz_hal2.c): a vertex 1e-100 from its neighbour made the width
+ * of the disc through it cancel catastrophically; the level-0 certified error (2.59) was then
+ * smaller than the distance of vertex (0,-6) to the approximation (3.09). Every level's
+ * certified error must bound the deviation of every original vertex. */
+static void test_hal2_certified_error_near_duplicate(void)
+{
+    static const double ys[] = {7.5118002732592141e-306, 1e-300, 1e-100, 1e-10, 0, -1e-3};
+    for (size_t i = 0; i < sizeof ys / sizeof *ys; i++) {
+        double xy[] = {0, -6, 1, 0, 2, 0, 3, 0, 3, ys[i], -8, -8};
+        size_t rs[2], ps[2];
+        fl_polygon p;
+        one_ring(&p, xy, 6, rs, ps);
+        fl_hal2 hal;
+        fl_error err;
+        CHECK_STATUS(fl_hal2_build(&p, NULL, &hal, &err), FL_OK, &err);
+        for (uint32_t level = 0; level <= hal.depth; level++) {
+            fl_polygon a;
+            double bound;
+            CHECK_STATUS(fl_hal2_approximate_level(&hal, level, &a, &bound, &err), FL_OK, &err);
+            double dev = oracle_deviation(&p, &a);
+            CHECK_MSG(dev <= bound * (1 + 1e-9), "y %g level %u: deviation %.17g > certified "
+                      "%.17g", ys[i], level, dev, bound);
+            fl_polygon_free(&a);
+        }
+        fl_hal2_free(&hal);
+    }
+}
+
 static void expect_sweep(const char *name, fl_mesh *m, const double *q, size_t nq)
 {
     fl_sweep *s;
@@ -150,6 +178,7 @@ int main(void)
 {
     fl_test_case cases[] = {
         FL_TEST_CASE(test_hal2_degenerate),
+        FL_TEST_CASE(test_hal2_certified_error_near_duplicate),
         FL_TEST_CASE(test_sweep_degenerate),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);

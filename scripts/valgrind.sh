@@ -13,7 +13,7 @@ command -v valgrind >/dev/null || { echo "valgrind.sh: valgrind not installed" >
 # covering readers/writers, predicates, Delaunay, graphs, reconstruction, HAL, sweep, mesh
 # checks and the degenerate-input suite.
 subset="core_test_core io_test_off io_test_obj io_test_ply io_test_stl io_test_geojson
-io_test_xy_polygon io_test_balls predicates_test_sos delaunay_test_sort
+io_test_xy_polygon io_test_balls delaunay_test_sort
 delaunay_test_dt2_verify mesh_test_halfedge mesh_test_mesh_topology mesh_test_polygon_check
 hal_test_hal2_insert graphs_test_gamma_figures reconstruct_test_criteria2
 degenerate_test_delaunay_degenerate degenerate_test_mesh_io_degenerate

@@ -1,6 +1,7 @@
 /* Fuzzes fl_dt2_build, fl_dt3_build and fl_rt3_build on up to 64 decoded points: the first byte
  * picks the triangulation. Invariants: NaN/Inf input is FL_ERR_INPUT; finite input never gives
- * FL_ERR_ALGORITHM unless all points are collinear/coplanar (checked exactly); on success the independent verifier (fl_*_verify) accepts the result. */
+ * FL_ERR_ALGORITHM unless all points are collinear/coplanar (checked exactly); on success the
+ * independent verifier (fl_*_verify) accepts the result. */
 #include "fuzz_common.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

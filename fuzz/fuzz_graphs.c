@@ -62,7 +62,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     /* Mostly valid parameters (an invalid one is a clean FL_ERR_USAGE, covered by few inputs). */
     if (!(head & 4)) {
         double t;
-        if (par.range == 0 && fabs(par.c[0]) > fabs(par.c[1])) t = par.c[0], par.c[0] = par.c[1], par.c[1] = t;
+        if (par.range == 0 && fabs(par.c[0]) > fabs(par.c[1]))
+            t = par.c[0], par.c[0] = par.c[1], par.c[1] = t;
         if (par.range != 0 && par.c[0] > par.c[1]) t = par.c[0], par.c[0] = par.c[1], par.c[1] = t;
         if (par.range != 0 && par.c[2] > par.c[3]) t = par.c[2], par.c[2] = par.c[3], par.c[3] = t;
     }

@@ -106,7 +106,8 @@ static void fuzz3(fz_in *in, uint8_t head)
             }
             if (shared != 3) continue;
             found = 1;
-            FZ_ASSERT(fl_orient3d(xyz + 3 * f[0], xyz + 3 * f[1], xyz + 3 * f[2], xyz + 3 * apex) > 0,
+            const double *a = xyz + 3 * f[0], *b = xyz + 3 * f[1], *c = xyz + 3 * f[2];
+            FZ_ASSERT(fl_orient3d(a, b, c, xyz + 3 * apex) > 0,
                       "boundary triangle %zu faces inwards", t);
         }
         FZ_ASSERT(found, "boundary triangle %zu is on no interior tetrahedron", t);

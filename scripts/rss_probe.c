@@ -56,7 +56,8 @@ int main(int argc, char **argv)
         for (size_t i = 0; i < k; i++)
             for (size_t j = 0; j < k; j++) {
                 double *p = c + 3 * (i * k + j);
-                p[0] = (double)i, p[1] = (double)j, p[2] = sin(0.1 * (double)i) * cos(0.07 * (double)j);
+                p[0] = (double)i, p[1] = (double)j;
+                p[2] = sin(0.1 * (double)i) * cos(0.07 * (double)j);
             }
         units = 2 * (k - 1) * (k - 1);
         tri = malloc(3 * units * sizeof *tri);

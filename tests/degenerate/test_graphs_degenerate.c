@@ -119,7 +119,8 @@ static void test_classic_collinear(void)
         for (size_t e = 0; e < g.simplex_count && e < 5; e++) {
             int found = 0;
             for (size_t f = 0; f < 5; f++)
-                found |= g.simplices[2 * e] == path[2 * f] && g.simplices[2 * e + 1] == path[2 * f + 1];
+                found |= g.simplices[2 * e] == path[2 * f] &&
+                         g.simplices[2 * e + 1] == path[2 * f + 1];
             CHECK_MSG(found, "kind %d: edge %u-%u is not consecutive", (int)kinds[k],
                       g.simplices[2 * e], g.simplices[2 * e + 1]);
         }

@@ -18,7 +18,8 @@ static void expect_hal_matches_oracle(const char *name, fl_polygon *p)
     /* Queries: a 17x17 lattice over the bounding box (hits vertices and edges), each vertex. */
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
     for (size_t v = 0; v < p->vertex_count; v++)
-        for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], p->xy[2 * v + c]), hi[c] = fmax(hi[c], p->xy[2 * v + c]);
+        for (int c = 0; c < 2; c++)
+            lo[c] = fmin(lo[c], p->xy[2 * v + c]), hi[c] = fmax(hi[c], p->xy[2 * v + c]);
     for (int i = -1; i <= 17; i++)
         for (int j = -1; j <= 17; j++) {
             double q[2] = {lo[0] + (hi[0] - lo[0]) * i / 16, lo[1] + (hi[1] - lo[1]) * j / 16};

@@ -7,7 +7,7 @@ PREFIX ?= /usr/local
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE ?= cmake
 
-.PHONY: all build demo test test-debug test-asan install api-docs deb-test clean
+.PHONY: all build demo test test-debug test-asan install api-docs deb-test fuzz fuzz-build valgrind clean
 
 all: build
 
@@ -42,5 +42,20 @@ api-docs:
 deb-test:
 	sh tests/install/test_deb.sh .
 
+# libFuzzer targets (clang, ASan + UBSan) built into build-fuzz/; `make fuzz FUZZ_SECONDS=N`
+# runs every target for N seconds (default 30) from its seed corpus (fuzz/README.md).
+FUZZ_SECONDS ?= 30
+fuzz-build:
+	$(MAKE) -C fuzz all
+
+fuzz:
+	$(MAKE) -C fuzz run FUZZ_SECONDS=$(FUZZ_SECONDS)
+
+# valgrind memcheck on a fast subset of the debug-build tests: zero errors and leaks required.
+valgrind:
+	$(CMAKE) -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug >/dev/null
+	$(CMAKE) --build build-debug -j $(JOBS)
+	scripts/valgrind.sh build-debug
+
 clean:
-	rm -rf build build-debug build-asan
+	rm -rf build build-debug build-asan build-fuzz

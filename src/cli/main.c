@@ -1,7 +1,9 @@
 /* The `flintstone` command: parses the subcommand and hands over. Each subcommand lives in its
  * own file (cmd_<name>.c) and follows the contract in cli.h. */
+#define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cli/cli.h"
 #include "cli/commands.h"
@@ -47,6 +49,27 @@ int cmd_version(int argc, char **argv)
     return 0;
 }
 
+/* Nothing lost (issue #14): an -o naming one of the command's own input files (the same
+ * file, by device and inode, however it is spelt) is refused before anything runs, so a
+ * command can never replace the user's input with its output. */
+static int output_is_an_input(int argc, char **argv)
+{
+    for (int i = 2; i + 1 < argc; i++) {
+        struct stat out;
+        if ((strcmp(argv[i], "-o") != 0 && strcmp(argv[i], "--output") != 0) ||
+            stat(argv[i + 1], &out) != 0)
+            continue;
+        for (int j = 2; j < argc; j++) {
+            struct stat in;
+            if (j == i + 1 || argv[j][0] == '-' || stat(argv[j], &in) != 0) continue;
+            if (in.st_dev == out.st_dev && in.st_ino == out.st_ino)
+                return cli_fail(1, "-o %s is also an input file; refusing to overwrite it",
+                                argv[i + 1]);
+        }
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -62,6 +85,7 @@ int main(int argc, char **argv)
         printf("flintstone %s\n", fl_version());
         return 0;
     }
+    if (output_is_an_input(argc, argv)) return 1;
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (strcmp(argv[1], commands[i].name) == 0) return commands[i].run(argc - 1, argv + 1);
     return cli_fail(1, "unknown command '%s' (see flintstone --help)", argv[1]);

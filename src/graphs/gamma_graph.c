@@ -1,6 +1,7 @@
 /* The γ-neighbourhood graph (thesis §3.2-3.5): parameter handling, the Theorem 3.1 brute force
  * and the choice of construction. */
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -82,6 +83,34 @@ static fl_status non_delaunay_part(const double *coords, size_t n, int dim,
     return gamma_brute_force(coords, n, dim, p, GAMMA_NON_DELAUNAY_PART, opt, b, err);
 }
 
+static fl_status gamma_graph_run(const double *coords, size_t n, int dim,
+                                 const fl_gamma_params *params, const fl_graph_options *opt,
+                                 fl_graph *out, fl_error *err);
+
+/* γ-graphs are invariant under scaling (Def. 3.1 measures every ball against the simplex's own
+ * radius), but the neighbourhood sizes c0', c1' are computed in floating point, where squared
+ * lengths under/overflow at coordinates near 1e-300 / 1e+300 (found by tests/degenerate: the
+ * default method and the brute force disagreed on a 4x4 grid at 1e-300). Returns a copy scaled
+ * by a power of two that brings max |x| into [1, 2), or NULL when no scaling is needed or the
+ * scaling would not be exact (a coordinate would become subnormal). */
+static double *rescaled_copy(const double *coords, size_t n, int dim)
+{
+    double max = 0, min = INFINITY;
+    for (size_t i = 0; i < n * (size_t)dim; i++) {
+        double a = fabs(coords[i]);
+        if (a > max) max = a;
+        if (a > 0 && a < min) min = a;
+    }
+    if (max == 0) return NULL;
+    int k = -ilogb(max);
+    if (k > -64 && k < 64) return NULL; /* moderate scale: nothing to gain */
+    if (k < 0 && ldexp(min, k) < DBL_MIN) return NULL; /* scaling down must stay exact */
+    double *c = fl_alloc_array(n * (size_t)dim, sizeof *c);
+    if (!c) return NULL; /* fall back to the unscaled input */
+    for (size_t i = 0; i < n * (size_t)dim; i++) c[i] = ldexp(coords[i], k);
+    return c;
+}
+
 fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma_params *params,
                          const fl_graph_options *opt, fl_graph *out, fl_error *err)
 {
@@ -90,6 +119,17 @@ fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma
     fl_status st = graph_check_points(coords, n, dim, err);
     if (st == FL_OK) st = gamma_check_params(params, err);
     if (st != FL_OK) return st;
+    double *scaled = rescaled_copy(coords, n, dim);
+    st = gamma_graph_run(scaled ? scaled : coords, n, dim, params, opt, out, err);
+    free(scaled);
+    return st;
+}
+
+static fl_status gamma_graph_run(const double *coords, size_t n, int dim,
+                                 const fl_gamma_params *params, const fl_graph_options *opt,
+                                 fl_graph *out, fl_error *err)
+{
+    fl_status st = FL_OK;
     graph_builder b;
     graph_builder_init(&b, dim, dim, n);
     if (opt && opt->method == FL_GAMMA_BRUTE_FORCE) {

@@ -46,6 +46,10 @@ static void grid_shape(graph_grid *g)
         double cells = 1;
         for (int a = 0; a < g->dim; a++) {
             double r = floor((hi[a] - g->lo[a]) / g->cell) + 1;
+            /* Extents beyond DBL_MAX (coordinates near ±1e308) make r NaN (inf / inf): one
+             * cell along the axis, the grid being a filter only (found by fuzz/fuzz_graphs.c;
+             * tests/degenerate/test_graphs_degenerate.c). */
+            if (!(r >= 1 && r <= 0x1p52)) r = 1;
             g->res[a] = (size_t)r;
             cells *= r;
         }

@@ -43,11 +43,17 @@ static double disc_width(const double *p, const double *s, const double *k, doub
     double mx = p[0] + (s[0] - p[0]) / 2, my = p[1] + (s[1] - p[1]) / 2;
     double dx = s[0] - p[0], dy = s[1] - p[1], len = hypot(dx, dy), h = len / 2;
     double ux = dx / len, uy = dy / len;
-    double x = (k[0] - mx) * ux + (k[1] - my) * uy;
-    double y = -(k[0] - mx) * uy + (k[1] - my) * ux; /* signed: > 0 left of p s */
+    /* x^2 - h^2 = (x - h)(x + h) with x - h = (k - s).u and x + h = (k - p).u, and y from the
+     * nearer chord end: computed from k - mid they cancel catastrophically when k nearly
+     * coincides with p or s (found by fuzz/fuzz_hal2.c: k 1e-100 from s gave a width of 1.39
+     * instead of 3.46, so the certified error missed a vertex; tests/degenerate). */
+    double xm = (k[0] - s[0]) * ux + (k[1] - s[1]) * uy;
+    double xp = (k[0] - p[0]) * ux + (k[1] - p[1]) * uy;
+    const double *e = fabs(xm) < fabs(xp) ? s : p;
+    double y = -(k[0] - e[0]) * uy + (k[1] - e[1]) * ux; /* signed: > 0 left of p s */
     double nx = -uy, ny = ux;
     if (y < 0) y = -y, nx = -nx, ny = -ny;
-    double c = (x * x + y * y - h * h) / (2 * y), r = hypot(h, c);
+    double c = (xm * xp + y * y) / (2 * y), r = hypot(h, c);
     centre[0] = mx + c * nx;
     centre[1] = my + c * ny;
     if (!(isfinite(centre[0]) && isfinite(centre[1]))) centre[0] = mx, centre[1] = my;

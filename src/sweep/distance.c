@@ -93,17 +93,18 @@ double fl_sweep_triangle_closest(const double *p, const double *a, const double 
     double va = d3 * d6 - d5 * d4, vb = d5 * d2 - d1 * d6, vc = d1 * d4 - d3 * d2;
     double denom = va + vb + vc; /* = |ab x ac|^2 in exact arithmetic */
     double ab2 = dot3(ab, ab), ac2 = dot3(ac, ac);
+    /* Decide degeneracy on |ab x ac|^2 computed directly: va + vb + vc cancels catastrophically
+     * for a (nearly) collinear triangle and can pass the test with garbage barycentrics, giving
+     * a distance far above the true one (found by fuzz/fuzz_sweep.c: a thin bounding triangle
+     * whose lower bound d - eps exceeded the answer; tests/degenerate/test_sweep_degenerate.c). */
+    double cx = ab[1] * ac[2] - ab[2] * ac[1], cy = ab[2] * ac[0] - ab[0] * ac[2];
+    double cz = ab[0] * ac[1] - ab[1] * ac[0], cross2 = cx * cx + cy * cy + cz * cz;
     /* Outside the face's prism (some barycentric of the projection is negative) the nearest
      * point is on the boundary. A degenerate triangle (sin of its angle at a below 1e-12) also
      * goes there: its face solve would divide by (nearly) zero, and its face lies within
      * 1e-12 |ab| of its edges. Between that and well-shaped triangles the face solve loses
      * accuracy like 1/sin^2 (docs/sweep.md). */
-    double n[3] = {ab[1] * ac[2] - ab[2] * ac[1], ab[2] * ac[0] - ab[0] * ac[2],
-                   ab[0] * ac[1] - ab[1] * ac[0]};
-    /* The degeneracy test uses |ab x ac|^2 itself: va + vb + vc carries rounding errors of the
-     * size of |ap|^2 |ab| |ac| u, so for a query far from a (nearly) collinear triangle it can
-     * look well-conditioned and the face solve returns a point far off the triangle. */
-    if (!(dot3(n, n) > 1e-24 * ab2 * ac2) || va < 0 || vb < 0 || vc < 0)
+    if (!(cross2 > 1e-24 * ab2 * ac2) || !(denom > 0) || va < 0 || vb < 0 || vc < 0)
         return triangle_edges_closest(p, v, bary, closest);
     double s = vb / denom, t = vc / denom;
     set_bary(bary, 1 - s - t, s, t);

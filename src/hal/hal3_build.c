@@ -14,7 +14,6 @@
  * corners is a leaf. A split vertex of a side must occur once in the loops of both nodes, so no
  * child has two equal corners. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -105,6 +104,44 @@ static int is_leaf(const fl_mesh *m, const hal3_piece *pc)
     return 0;
 }
 
+/* A piece holding triangles whose corners coalesced to two distinct vertices (a digon between
+ * two different paths): the loop vertex halfway along the longer segment between them becomes
+ * the third corner. The neighbour across that segment does not split it, so the approximation
+ * may have a crack there; this happens only where shortest paths coalesce. Returns 0 on
+ * success. */
+static int fix_corners(hal3_piece *pc)
+{
+    uint32_t cp[6];
+    int n = 0;
+    for (int i = 0; i < pc->nc; i++) {
+        uint32_t v = pc->loop[pc->cpos[i]];
+        int dup = 0;
+        for (int j = 0; j < n; j++) dup |= pc->loop[cp[j]] == v;
+        if (!dup) cp[n++] = pc->cpos[i];
+    }
+    if (n != 2) return -1;
+    size_t a = cp[0], c = cp[1], l1 = c - a, l2 = pc->nl - l1;
+    size_t mid = l1 >= l2 ? a + l1 / 2 : (c + l2 / 2) % pc->nl;
+    uint32_t v = pc->loop[mid];
+    if (v == pc->loop[a] || v == pc->loop[c]) return -1;
+    uint32_t t[3] = {(uint32_t)a, (uint32_t)c, (uint32_t)mid};
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 3; j++)
+            if (t[j] < t[i]) {
+                uint32_t x = t[i];
+                t[i] = t[j], t[j] = x;
+            }
+    /* Rotate so that the first corner is at position 0. */
+    uint32_t *rot = malloc(pc->nl * sizeof(uint32_t));
+    if (!rot) return -1;
+    for (size_t i = 0; i < pc->nl; i++) rot[i] = pc->loop[(t[0] + i) % pc->nl];
+    memcpy(pc->loop, rot, pc->nl * sizeof(uint32_t));
+    free(rot);
+    pc->cpos[0] = 0, pc->cpos[1] = t[1] - t[0], pc->cpos[2] = t[2] - t[0];
+    pc->nc = 3;
+    return 0;
+}
+
 /* Adds the node of piece *pc (taken over) at `level`; a live entry unless it is a leaf.
  * Empty pieces are dropped: *added = 0. */
 static fl_status add_node(build *b, hal3_piece *pc, uint32_t level, int32_t parent, int *added,
@@ -114,6 +151,7 @@ static fl_status add_node(build *b, hal3_piece *pc, uint32_t level, int32_t pare
     int distinct = pc->nc == 3 && pc->loop[pc->cpos[0]] != pc->loop[pc->cpos[1]] &&
                    pc->loop[pc->cpos[1]] != pc->loop[pc->cpos[2]] &&
                    pc->loop[pc->cpos[2]] != pc->loop[pc->cpos[0]];
+    if (!distinct && pc->nf > 0 && !fix_corners(pc)) distinct = 1;
     if (!distinct) {
         /* A degenerate triangle (coalescing corners): its sides pair up among themselves, so
          * dropping it keeps the level closed; it must not hold any triangle. */
@@ -469,13 +507,6 @@ static fl_status split_node(build *b, live *x, fl_error *err)
     fl_hal3_node *nd = node_at(b, x->node);
     uint32_t c[3] = {nd->v[0], nd->v[1], nd->v[2]};
     uint32_t level = nd->level + 1;
-    if (x->mask == 0 && x->q == FL_HAL3_NONE && getenv("HAL3_DEBUG")) {
-        fprintf(stderr, "loop:");
-        for (size_t i = 0; i < x->pc.nl; i++) fprintf(stderr, " %u", x->pc.loop[i]);
-        fprintf(stderr, " | cpos %u %u %u | m %u %u %u partners %d %d %d\n", x->pc.cpos[0], x->pc.cpos[1], x->pc.cpos[2], x->m[0], x->m[1], x->m[2], x->partner[0], x->partner[1], x->partner[2]);
-        for (size_t i = 0; i < x->pc.nf; i++) { const uint32_t *t = b->mesh->tri + 3 * (size_t)x->pc.faces[i]; fprintf(stderr, " face %u %u %u\n", t[0], t[1], t[2]); }
-        for (int k = 0; k < 3; k++) if (x->partner[k] >= 0) { const live *y = &b->cur[x->partner[k]]; fprintf(stderr, "  partner loop:"); for (size_t i = 0; i < y->pc.nl; i++) fprintf(stderr, " %u", y->pc.loop[i]); fprintf(stderr, "\n"); }
-    }
     if (x->mask == 0 && x->q == FL_HAL3_NONE)
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
                        "hal3: refinement stuck at triangle (%u, %u, %u) (%zu triangles, no "

@@ -100,8 +100,10 @@ fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mes
     tstart[0] = 0;
     size_t top = 0;
     for (size_t n = 0; n < nn; n++)
-        if (hal->nodes[n].error > max_error || hal->nodes[n].face_count == 0)
-            refine(ref, stack, &top, hal, (uint32_t)n); /* an empty node stands for nothing */
+        /* Bound 0 asks for the mesh itself: refine everything, also the empty nodes (error 0)
+         * and flat parts (error 0) that a positive bound leaves alone. */
+        if (hal->nodes[n].error > max_error || max_error == 0)
+            refine(ref, stack, &top, hal, (uint32_t)n);
     while (top > 0) {
         uint32_t n = stack[--top];
         if (hal->nodes[n].parent >= 0) refine(ref, stack, &top, hal, (uint32_t)hal->nodes[n].parent);

@@ -240,7 +240,7 @@ fl_status fl_hal3_intersect(const fl_hal3 *a, const fl_hal3 *b, int first_only,
         fl_vec_free(&res);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3_intersect: out of memory");
     }
-    qsort(res.data, res.count, 2 * sizeof(uint32_t), cmp_pair);
+    if (res.count > 1) qsort(res.data, res.count, 2 * sizeof(uint32_t), cmp_pair);
     out->count = res.count;
     out->pairs = res.data;
     return FL_OK;

@@ -1074,8 +1074,11 @@ void fl_sweep_hits_free(fl_sweep_hits *hits);
  * the surface it stands for, bounded by three edge paths between its corners. A node is refined
  * (Algorithm 7.2, level by level) by a three-split at an interior vertex v_q of its part, or by
  * splits at one, two or three sides at a vertex of the side's path when angles are below the
- * threshold; the neighbour across a split side splits at the same vertex, so every level is a
- * crack-free closed mesh. The leaves are the original triangles. A node's flintstone
+ * threshold; the neighbour across a split side splits at the same vertex, so the levels are
+ * crack-free except where shortest paths coalesce (a few edges; docs/hal.md "Known limits"):
+ * level 0 and the deepest level are closed manifolds. Pieces left without triangles by
+ * coalescing paths stay as nodes with face_count 0 (empty flintstone) so their neighbours' sides
+ * stay matched. The leaves are the original triangles. A node's flintstone
  * (Def. 7.5) is built from the balls through its corners and v_q / v_r, stored in floating point
  * enlarged so that it provably contains every original triangle of its subtree. */
 
@@ -1146,17 +1149,18 @@ void fl_hal3_free(fl_hal3 *hal);
 int fl_hal3_flintstone_may_contain(const fl_hal3 *hal, uint32_t node, const double *x);
 
 /* The level-`level` approximation: the triangles of the nodes of that level and of the leaves
- * above it, a closed mesh on the used vertices (coordinates copied, vertices renumbered in
- * order of first use). level >= hal->depth gives the original triangles. *error (may be NULL)
+ * above it, on the used vertices (coordinates copied, vertices renumbered in order of first
+ * use); crack-free up to the limit above. level >= hal->depth gives the original triangles. *error (may be NULL)
  * receives the largest node error of the cut (0 at the finest level). Free with fl_mesh_free.
  * Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
 fl_status fl_hal3_approximate_level(const fl_hal3 *hal, uint32_t level, fl_mesh *out,
                                     double *error, fl_error *err);
 
 /* The adaptive approximation (§7.3.3): nodes are refined while their error exceeds max_error,
- * and a node is also refined when a tie partner is (so the result stays crack-free). *error and
- * *level (each may be NULL) receive the certified error (<= max_error) and the deepest level
- * used. Errors: FL_ERR_USAGE for a negative or NaN max_error, FL_ERR_NOMEM. */
+ * and a node is also refined when a tie partner is (so no split side opens a crack); max_error
+ * 0 refines every node and gives the mesh itself. *error and *level (each may be NULL) receive
+ * the certified error (<= max_error: every point of the surface is within it of the
+ * approximation) and the deepest level used. Errors: FL_ERR_USAGE for a negative or NaN max_error, FL_ERR_NOMEM. */
 fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mesh *out,
                                     double *error, uint32_t *level, fl_error *err);
 

@@ -1150,9 +1150,9 @@ int fl_hal3_flintstone_may_contain(const fl_hal3 *hal, uint32_t node, const doub
 
 /* The level-`level` approximation: the triangles of the nodes of that level and of the leaves
  * above it, on the used vertices (coordinates copied, vertices renumbered in order of first
- * use); crack-free up to the limit above. level >= hal->depth gives the original triangles. *error (may be NULL)
- * receives the largest node error of the cut (0 at the finest level). Free with fl_mesh_free.
- * Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
+ * use); crack-free up to the limit above. level >= hal->depth gives the original triangles.
+ * *error (may be NULL) receives the largest node error of the cut (0 at the finest level). Free
+ * with fl_mesh_free. Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
 fl_status fl_hal3_approximate_level(const fl_hal3 *hal, uint32_t level, fl_mesh *out,
                                     double *error, fl_error *err);
 
@@ -1160,7 +1160,8 @@ fl_status fl_hal3_approximate_level(const fl_hal3 *hal, uint32_t level, fl_mesh 
  * and a node is also refined when a tie partner is (so no split side opens a crack); max_error
  * 0 refines every node and gives the mesh itself. *error and *level (each may be NULL) receive
  * the certified error (<= max_error: every point of the surface is within it of the
- * approximation) and the deepest level used. Errors: FL_ERR_USAGE for a negative or NaN max_error, FL_ERR_NOMEM. */
+ * approximation) and the deepest level used. Errors: FL_ERR_USAGE for a negative or NaN
+ * max_error, FL_ERR_NOMEM. */
 fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mesh *out,
                                     double *error, uint32_t *level, fl_error *err);
 

@@ -20,7 +20,8 @@ static fl_status cut_mesh(const fl_hal3 *hal, const uint8_t *keep, fl_mesh *out,
 {
     memset(out, 0, sizeof *out);
     size_t nt = 0;
-    for (size_t n = 0; n < hal->node_count; n++) nt += keep[n] != 0;
+    for (size_t n = 0; n < hal->node_count; n++)
+        nt += keep[n] != 0;
     uint32_t *map = fl_alloc_array(hal->mesh.vertex_count + 1, sizeof(uint32_t));
     out->tri = fl_alloc_array(3 * nt + 1, sizeof(uint32_t));
     out->xyz = fl_alloc_array(3 * hal->mesh.vertex_count + 1, sizeof(double));
@@ -47,10 +48,11 @@ static fl_status cut_mesh(const fl_hal3 *hal, const uint8_t *keep, fl_mesh *out,
     return FL_OK;
 }
 
-fl_status fl_hal3_approximate_level(const fl_hal3 *hal, uint32_t level, fl_mesh *out,
-                                    double *error, fl_error *err)
+fl_status fl_hal3_approximate_level(const fl_hal3 *hal, uint32_t level, fl_mesh *out, double *error,
+                                    fl_error *err)
 {
-    if (!hal || !out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_approximate: NULL argument");
+    if (!hal || !out)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_approximate: NULL argument");
     uint8_t *keep = fl_calloc_array(hal->node_count + 1, 1);
     if (!keep) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3: out of memory");
     double e = 0;
@@ -75,7 +77,8 @@ static void refine(uint8_t *ref, uint32_t *stack, size_t *top, const fl_hal3 *ha
 fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mesh *out,
                                     double *error, uint32_t *level, fl_error *err)
 {
-    if (!hal || !out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_approximate: NULL argument");
+    if (!hal || !out)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_approximate: NULL argument");
     if (!(max_error >= 0))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_approximate: error bound must be >= 0");
     size_t nn = hal->node_count;
@@ -89,14 +92,17 @@ fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mes
         goto done;
     }
     /* Tie adjacency (CSR). */
-    for (size_t t = 0; t < 2 * hal->tie_count; t++) tstart[hal->ties[t] + 1]++;
-    for (size_t n = 0; n < nn; n++) tstart[n + 1] += tstart[n];
+    for (size_t t = 0; t < 2 * hal->tie_count; t++)
+        tstart[hal->ties[t] + 1]++;
+    for (size_t n = 0; n < nn; n++)
+        tstart[n + 1] += tstart[n];
     for (size_t t = 0; t < hal->tie_count; t++) {
         uint32_t a = hal->ties[2 * t], b = hal->ties[2 * t + 1];
         tadj[tstart[a]++] = b;
         tadj[tstart[b]++] = a;
     }
-    for (size_t n = nn; n > 0; n--) tstart[n] = tstart[n - 1];
+    for (size_t n = nn; n > 0; n--)
+        tstart[n] = tstart[n - 1];
     tstart[0] = 0;
     size_t top = 0;
     for (size_t n = 0; n < nn; n++)
@@ -106,8 +112,10 @@ fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mes
             refine(ref, stack, &top, hal, (uint32_t)n);
     while (top > 0) {
         uint32_t n = stack[--top];
-        if (hal->nodes[n].parent >= 0) refine(ref, stack, &top, hal, (uint32_t)hal->nodes[n].parent);
-        for (uint32_t i = tstart[n]; i < tstart[n + 1]; i++) refine(ref, stack, &top, hal, tadj[i]);
+        if (hal->nodes[n].parent >= 0)
+            refine(ref, stack, &top, hal, (uint32_t)hal->nodes[n].parent);
+        for (uint32_t i = tstart[n]; i < tstart[n + 1]; i++)
+            refine(ref, stack, &top, hal, tadj[i]);
     }
     double e = 0;
     uint32_t lv = 0;

@@ -25,11 +25,11 @@
 typedef struct live {
     uint32_t node;
     hal3_piece pc;
-    uint32_t q;           /* three-split vertex or FL_HAL3_NONE */
-    uint8_t mask;         /* sides to split */
-    uint32_t m[3];        /* split vertex of each side */
-    uint32_t m_any[3];    /* split vertex of each side allowing coalescing paths */
-    int32_t partner[3];   /* live index across each side, -1 when none */
+    uint32_t q;         /* three-split vertex or FL_HAL3_NONE */
+    uint8_t mask;       /* sides to split */
+    uint32_t m[3];      /* split vertex of each side */
+    uint32_t m_any[3];  /* split vertex of each side allowing coalescing paths */
+    int32_t partner[3]; /* live index across each side, -1 when none */
     uint8_t partner_side[3];
 } live;
 
@@ -81,8 +81,7 @@ static fl_status check_input(const fl_mesh *mesh, fl_error *err)
         st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
                      "genus %lld: the HAL tree needs a sphere-like surface", r.genus);
     else if (r.degenerate_faces)
-        st = fl_fail(err, FL_ERR_INPUT, NULL, -1, "%zu degenerate triangles",
-                     r.degenerate_faces);
+        st = fl_fail(err, FL_ERR_INPUT, NULL, -1, "%zu degenerate triangles", r.degenerate_faces);
     fl_mesh_report_free(&r);
     return st;
 }
@@ -116,7 +115,8 @@ static int fix_corners(hal3_piece *pc)
     for (int i = 0; i < pc->nc; i++) {
         uint32_t v = pc->loop[pc->cpos[i]];
         int dup = 0;
-        for (int j = 0; j < n; j++) dup |= pc->loop[cp[j]] == v;
+        for (int j = 0; j < n; j++)
+            dup |= pc->loop[cp[j]] == v;
         if (!dup) cp[n++] = pc->cpos[i];
     }
     if (n != 2) return -1;
@@ -134,7 +134,8 @@ static int fix_corners(hal3_piece *pc)
     /* Rotate so that the first corner is at position 0. */
     uint32_t *rot = malloc(pc->nl * sizeof(uint32_t));
     if (!rot) return -1;
-    for (size_t i = 0; i < pc->nl; i++) rot[i] = pc->loop[(t[0] + i) % pc->nl];
+    for (size_t i = 0; i < pc->nl; i++)
+        rot[i] = pc->loop[(t[0] + i) % pc->nl];
     memcpy(pc->loop, rot, pc->nl * sizeof(uint32_t));
     free(rot);
     pc->cpos[0] = 0, pc->cpos[1] = t[1] - t[0], pc->cpos[2] = t[2] - t[0];
@@ -168,7 +169,8 @@ static fl_status add_node(build *b, hal3_piece *pc, uint32_t level, int32_t pare
      * children degenerate. */
     fl_hal3_node nd;
     memset(&nd, 0, sizeof nd);
-    for (int k = 0; k < 3; k++) nd.v[k] = pc->loop[pc->cpos[k]];
+    for (int k = 0; k < 3; k++)
+        nd.v[k] = pc->loop[pc->cpos[k]];
     nd.level = level;
     nd.parent = parent;
     nd.face = FL_HAL3_NONE;
@@ -193,7 +195,8 @@ static fl_status add_node(build *b, hal3_piece *pc, uint32_t level, int32_t pare
     lv->pc = *pc;
     memset(pc, 0, sizeof *pc);
     lv->q = hal3_flintstone(&b->w, n, &lv->pc);
-    for (int k = 0; k < 3; k++) lv->partner[k] = -1;
+    for (int k = 0; k < 3; k++)
+        lv->partner[k] = -1;
     return FL_OK;
 }
 
@@ -219,7 +222,8 @@ static uint64_t side_hash(const hal3_piece *pc, int k)
     uint64_t h = 1469598103934665603ull;
     for (size_t i = 0; i < n; i++) {
         uint32_t v = side_vertex(pc, k, rev ? n - 1 - i : i);
-        for (int s = 0; s < 32; s += 8) h = (h ^ ((v >> s) & 255u)) * 1099511628211ull;
+        for (int s = 0; s < 32; s += 8)
+            h = (h ^ ((v >> s) & 255u)) * 1099511628211ull;
     }
     return h;
 }
@@ -246,7 +250,8 @@ static fl_status find_partners(build *b, fl_error *err)
     if (!r) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3: out of memory");
     size_t n = 0;
     for (size_t i = 0; i < b->ncur; i++)
-        for (int k = 0; k < 3; k++) r[n++] = (side_rec){side_hash(&b->cur[i].pc, k), (uint32_t)i, (uint32_t)k};
+        for (int k = 0; k < 3; k++)
+            r[n++] = (side_rec){side_hash(&b->cur[i].pc, k), (uint32_t)i, (uint32_t)k};
     qsort(r, n, sizeof *r, cmp_rec);
     for (size_t i = 0; i + 1 < n; i++) {
         if (r[i].hash != r[i + 1].hash) continue;
@@ -264,7 +269,8 @@ static fl_status find_partners(build *b, fl_error *err)
 
 static void count_loop(build *b, const hal3_piece *pc, int delta)
 {
-    for (size_t i = 0; i < pc->nl; i++) b->count[pc->loop[i]] += (uint32_t)delta;
+    for (size_t i = 0; i < pc->nl; i++)
+        b->count[pc->loop[i]] += (uint32_t)delta;
 }
 
 static double dist3(const fl_mesh *m, uint32_t a, uint32_t c)
@@ -321,7 +327,8 @@ static double corner_angle(const fl_mesh *m, uint32_t a, uint32_t p, uint32_t c)
     const double *A = m->xyz + 3 * (size_t)a, *P = m->xyz + 3 * (size_t)p,
                  *C = m->xyz + 3 * (size_t)c;
     double u[3], v[3];
-    for (int k = 0; k < 3; k++) u[k] = P[k] - A[k], v[k] = C[k] - A[k];
+    for (int k = 0; k < 3; k++)
+        u[k] = P[k] - A[k], v[k] = C[k] - A[k];
     double d = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
     double cr[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
                     u[0] * v[1] - u[1] * v[0]};
@@ -339,8 +346,8 @@ static uint8_t desired_sides(build *b, const live *x, const uint32_t *mv)
     if (x->q == FL_HAL3_NONE) return ok;
     int small[3], ns = 0;
     for (int k = 0; k < 3; k++) {
-        small[k] = corner_angle(b->mesh, n->v[k], n->v[(k + 1) % 3], n->v[(k + 2) % 3]) <
-                   b->threshold;
+        small[k] =
+            corner_angle(b->mesh, n->v[k], n->v[(k + 1) % 3], n->v[(k + 2) % 3]) < b->threshold;
         ns += small[k];
     }
     uint8_t want = 0;
@@ -407,10 +414,10 @@ static fl_status decide_splits(build *b, fl_error *err)
 /* ---- splitting one node ---- */
 
 /* The first corner at vertex v other than corner `not`. */
-static int corner_index(const hal3_piece *pc, uint32_t v, int not)
+static int corner_index(const hal3_piece *pc, uint32_t v, int not )
 {
     for (int i = 0; i < pc->nc; i++)
-        if (i != not && pc->loop[pc->cpos[i]] == v) return i;
+        if (i != not &&pc->loop[pc->cpos[i]] == v) return i;
     return -1;
 }
 
@@ -547,7 +554,8 @@ static fl_status choose_root(const fl_mesh *m, double ball[4], uint32_t r[3], fl
         free(ids), free(used), free(xyz);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3: out of memory");
     }
-    for (size_t t = 0; t < 3 * m->triangle_count; t++) used[m->tri[t]] = 1;
+    for (size_t t = 0; t < 3 * m->triangle_count; t++)
+        used[m->tri[t]] = 1;
     size_t n = 0;
     for (size_t v = 0; v < m->vertex_count; v++)
         if (used[v]) {
@@ -605,8 +613,10 @@ static fl_status levels(build *b, const fl_hal3_options *opt, fl_hal3 *out, fl_e
             opt->progress(opt->progress_user, "hal3", fmin(1.0, level / 64.0)))
             return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
         st = decide_splits(b, err);
-        for (size_t i = 0; i < b->ncur && st == FL_OK; i++) st = split_node(b, &b->cur[i], err);
-        for (size_t i = 0; i < b->ncur; i++) hal3_piece_free(&b->cur[i].pc);
+        for (size_t i = 0; i < b->ncur && st == FL_OK; i++)
+            st = split_node(b, &b->cur[i], err);
+        for (size_t i = 0; i < b->ncur; i++)
+            hal3_piece_free(&b->cur[i].pc);
         b->ncur = 0;
     }
     out->depth = level;
@@ -622,7 +632,8 @@ fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_build: NULL argument");
     double th = opt && opt->angle_threshold != 0 ? opt->angle_threshold : FL_HAL3_PI / 4;
     if (!(th >= 0 && th <= FL_HAL3_PI / 3))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_build: angle threshold outside [0, pi/3]");
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1,
+                       "hal3_build: angle threshold outside [0, pi/3]");
     fl_status st = check_input(mesh, err);
     if (st != FL_OK) return st;
     build b;
@@ -652,9 +663,11 @@ fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3
         if (st == FL_OK) st = hal3_cut_sphere(&b.w, r[0], r[1], r[2], &pa, &pb, err);
         int added;
         if (st == FL_OK) st = add_node(&b, &pa, 0, -1, &added, err);
-        if (st == FL_OK && !added) st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "hal3: empty root");
+        if (st == FL_OK && !added)
+            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "hal3: empty root");
         if (st == FL_OK) st = add_node(&b, &pb, 0, -1, &added, err);
-        if (st == FL_OK && !added) st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "hal3: empty root");
+        if (st == FL_OK && !added)
+            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "hal3: empty root");
         hal3_piece_free(&pa);
         hal3_piece_free(&pb);
     }
@@ -665,8 +678,10 @@ fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3
                 fmax(out->ball[3], fl_hal3_d2(out->ball, out->mesh.xyz + 3 * (size_t)mesh->tri[t]));
         st = levels(&b, opt, out, err);
     }
-    for (size_t i = 0; i < b.ncur; i++) hal3_piece_free(&b.cur[i].pc);
-    for (size_t i = 0; i < b.nnext; i++) hal3_piece_free(&b.next[i].pc);
+    for (size_t i = 0; i < b.ncur; i++)
+        hal3_piece_free(&b.cur[i].pc);
+    for (size_t i = 0; i < b.nnext; i++)
+        hal3_piece_free(&b.next[i].pc);
     free(b.cur);
     free(b.next);
     free(b.count);

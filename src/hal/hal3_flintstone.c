@@ -58,7 +58,8 @@ static void circumcentre(const double *p, const double *s, const double *t, cons
     cross(b, d, bxd), cross(d, a, dxa), cross(a, b, axb);
     double den = 2 * dot(a, bxd);
     double la = dot(a, a), lb = dot(b, b), ld = dot(d, d);
-    for (int k = 0; k < 3; k++) c[k] = p[k] + (la * bxd[k] + lb * dxa[k] + ld * axb[k]) / den;
+    for (int k = 0; k < 3; k++)
+        c[k] = p[k] + (la * bxd[k] + lb * dxa[k] + ld * axb[k]) / den;
 }
 
 /* Distance from x to the closed triangle abc (Ericson, Real-Time Collision Detection §5.1.5). */
@@ -85,18 +86,22 @@ static double point_triangle_distance(const double *x, const double *a, const do
     double pt[3];
     if (vc <= 0 && d1 >= 0 && d3 <= 0) {
         v = d1 / (d1 - d3);
-        for (int k = 0; k < 3; k++) pt[k] = a[k] + v * ab[k];
+        for (int k = 0; k < 3; k++)
+            pt[k] = a[k] + v * ab[k];
     } else if (vb <= 0 && d2 >= 0 && d6 <= 0) {
         w = d2 / (d2 - d6);
-        for (int k = 0; k < 3; k++) pt[k] = a[k] + w * ac[k];
+        for (int k = 0; k < 3; k++)
+            pt[k] = a[k] + w * ac[k];
     } else if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
         w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        for (int k = 0; k < 3; k++) pt[k] = b[k] + w * (c[k] - b[k]);
+        for (int k = 0; k < 3; k++)
+            pt[k] = b[k] + w * (c[k] - b[k]);
     } else {
         double den = va + vb + vc;
         if (!(fabs(den) > 0)) return sqrt(dot(ap, ap)); /* degenerate: fall back to a corner */
         v = vb / den, w = vc / den;
-        for (int k = 0; k < 3; k++) pt[k] = a[k] + ab[k] * v + ac[k] * w;
+        for (int k = 0; k < 3; k++)
+            pt[k] = a[k] + ab[k] * v + ac[k] * w;
     }
     sub(x, pt, r);
     return sqrt(dot(r, r));
@@ -138,7 +143,8 @@ uint32_t hal3_flintstone(hal3_work *w, fl_hal3_node *nd, const hal3_piece *pc)
     const fl_mesh *m = w->mesh;
     const double *P = vx(m, nd->v[0]), *S = vx(m, nd->v[1]), *T = vx(m, nd->v[2]);
     uint32_t loop_st = ++w->stamp, seen = ++w->stamp;
-    for (size_t i = 0; i < pc->nl; i++) w->vert_block[pc->loop[i]] = loop_st;
+    for (size_t i = 0; i < pc->nl; i++)
+        w->vert_block[pc->loop[i]] = loop_st;
     /* The part's vertices go to w->queue's sibling buffer pred (free outside Dijkstra). */
     vset V = {w->pred, 0};
     uint32_t qa[2] = {FL_HAL3_NONE, FL_HAL3_NONE}, qi[2] = {FL_HAL3_NONE, FL_HAL3_NONE};
@@ -162,7 +168,8 @@ uint32_t hal3_flintstone(hal3_work *w, fl_hal3_node *nd, const hal3_piece *pc)
     double a[3], b[3], n[3], un[3];
     sub(S, P, a), sub(T, P, b), cross(a, b, n);
     double nl = sqrt(dot(n, n));
-    for (int k = 0; k < 3; k++) un[k] = nl > 0 ? n[k] / nl : 0;
+    for (int k = 0; k < 3; k++)
+        un[k] = nl > 0 ? n[k] / nl : 0;
     nd->width[0] = nd->width[1] = 0;
     nd->side = 0;
     /* fl_orient3d(P,S,T,x) > 0 means x below the plane, i.e. on the side of -n. */
@@ -176,7 +183,8 @@ uint32_t hal3_flintstone(hal3_work *w, fl_hal3_node *nd, const hal3_piece *pc)
     if (degenerate || (qa[0] == FL_HAL3_NONE && qa[1] == FL_HAL3_NONE)) {
         double c[3] = {0, 0, 0};
         for (size_t i = 0; i < V.n; i++)
-            for (int k = 0; k < 3; k++) c[k] += vx(m, V.v[i])[k] / (double)V.n;
+            for (int k = 0; k < 3; k++)
+                c[k] += vx(m, V.v[i])[k] / (double)V.n;
         nd->kind = FL_HAL3_BALL;
         memcpy(nd->ball[0], c, sizeof c);
     } else if (qa[0] == FL_HAL3_NONE || qa[1] == FL_HAL3_NONE) {
@@ -191,8 +199,8 @@ uint32_t hal3_flintstone(hal3_work *w, fl_hal3_node *nd, const hal3_piece *pc)
         double rq = signed_radius(P, n, vx(m, qa[0]), cq);
         double rr = signed_radius(P, n, vx(m, qa[1]), cr);
         /* Def. 7.2: union when both radii are positive or the negative one is smaller. */
-        int uni = (rq > 0 && rr > 0) || (rq < 0 && rr > 0 && -rq < rr) ||
-                  (rr < 0 && rq > 0 && -rr < rq);
+        int uni =
+            (rq > 0 && rr > 0) || (rq < 0 && rr > 0 && -rq < rr) || (rr < 0 && rq > 0 && -rr < rq);
         memcpy(nd->ball[0], cq, sizeof cq);
         memcpy(nd->ball[1], cr, sizeof cr);
         nd->kind = uni ? FL_HAL3_BALL_UNION : FL_HAL3_TWO_BALLS;
@@ -229,7 +237,8 @@ uint32_t hal3_flintstone(hal3_work *w, fl_hal3_node *nd, const hal3_piece *pc)
         nd->width[1] = width(nd->ball[1], P, un, 1);
     }
     double e = 0;
-    for (size_t i = 0; i < V.n; i++) e = fmax(e, point_triangle_distance(vx(m, V.v[i]), P, S, T));
+    for (size_t i = 0; i < V.n; i++)
+        e = fmax(e, point_triangle_distance(vx(m, V.v[i]), P, S, T));
     nd->error = e * (1 + 1e-9);
     /* The three-split vertex: v_q or v_r among the interior vertices, the larger signed
      * radius (§7.3.2). */
@@ -252,7 +261,8 @@ void hal3_leaf_ball(const fl_mesh *m, fl_hal3_node *nd)
     for (int k = 0; k < 3; k++)
         c[k] = (vx(m, nd->v[0])[k] + vx(m, nd->v[1])[k] + vx(m, nd->v[2])[k]) / 3;
     c[3] = 0;
-    for (int j = 0; j < 3; j++) c[3] = fmax(c[3], fl_hal3_d2(c, vx(m, nd->v[j])));
+    for (int j = 0; j < 3; j++)
+        c[3] = fmax(c[3], fl_hal3_d2(c, vx(m, nd->v[j])));
     nd->kind = FL_HAL3_LEAF;
     nd->error = 0;
 }
@@ -268,7 +278,9 @@ int fl_hal3_flintstone_may_contain(const fl_hal3 *hal, uint32_t node, const doub
         return !out0 || !fl_hal3_outside_ball(nd->ball[1], x);
     case FL_HAL3_BALL_HALFSPACE:
         return !out0 && fl_orient3d(vx(&hal->mesh, nd->v[0]), vx(&hal->mesh, nd->v[1]),
-                                    vx(&hal->mesh, nd->v[2]), x) * nd->side >= 0;
+                                    vx(&hal->mesh, nd->v[2]), x) *
+                                nd->side >=
+                            0;
     default:
         return !out0;
     }

@@ -17,16 +17,20 @@ static void ball_of(const double *xyz, const uint32_t *r, int nr, double *b)
     b[0] = p[0], b[1] = p[1], b[2] = p[2], b[3] = 0;
     if (nr < 2) return;
     double a[3], c[3], d[3];
-    for (int k = 0; k < 3; k++) a[k] = xyz[3 * (size_t)r[1] + k] - p[k];
+    for (int k = 0; k < 3; k++)
+        a[k] = xyz[3 * (size_t)r[1] + k] - p[k];
     if (nr == 2) {
-        for (int k = 0; k < 3; k++) b[k] = p[k] + a[k] / 2;
+        for (int k = 0; k < 3; k++)
+            b[k] = p[k] + a[k] / 2;
         b[3] = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) / 4;
         return;
     }
-    for (int k = 0; k < 3; k++) c[k] = xyz[3 * (size_t)r[2] + k] - p[k];
+    for (int k = 0; k < 3; k++)
+        c[k] = xyz[3 * (size_t)r[2] + k] - p[k];
     double axc[3] = {a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2],
                      a[0] * c[1] - a[1] * c[0]};
-    double la = a[0] * a[0] + a[1] * a[1] + a[2] * a[2], lc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    double la = a[0] * a[0] + a[1] * a[1] + a[2] * a[2],
+           lc = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
     double off[3];
     if (nr == 3) {
         double n2 = axc[0] * axc[0] + axc[1] * axc[1] + axc[2] * axc[2];
@@ -37,7 +41,8 @@ static void ball_of(const double *xyz, const uint32_t *r, int nr, double *b)
         off[1] = (v[2] * axc[0] - v[0] * axc[2]) / (2 * n2);
         off[2] = (v[0] * axc[1] - v[1] * axc[0]) / (2 * n2);
     } else {
-        for (int k = 0; k < 3; k++) d[k] = xyz[3 * (size_t)r[3] + k] - p[k];
+        for (int k = 0; k < 3; k++)
+            d[k] = xyz[3 * (size_t)r[3] + k] - p[k];
         double ld = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         double cxd[3] = {c[1] * d[2] - c[2] * d[1], c[2] * d[0] - c[0] * d[2],
                          c[0] * d[1] - c[1] * d[0]};
@@ -45,9 +50,11 @@ static void ball_of(const double *xyz, const uint32_t *r, int nr, double *b)
                          d[0] * a[1] - d[1] * a[0]};
         double den = 2 * (a[0] * cxd[0] + a[1] * cxd[1] + a[2] * cxd[2]);
         if (!(fabs(den) > 0)) return ball_of(xyz, r, 3, b);
-        for (int k = 0; k < 3; k++) off[k] = (la * cxd[k] + lc * dxa[k] + ld * axc[k]) / den;
+        for (int k = 0; k < 3; k++)
+            off[k] = (la * cxd[k] + lc * dxa[k] + ld * axc[k]) / den;
     }
-    for (int k = 0; k < 3; k++) b[k] = p[k] + off[k];
+    for (int k = 0; k < 3; k++)
+        b[k] = p[k] + off[k];
     b[3] = off[0] * off[0] + off[1] * off[1] + off[2] * off[2];
 }
 

@@ -105,7 +105,8 @@ static int point_parity(const fl_hal3 *hal, const double *x, uint32_t *stack)
             parity ^= ray_crosses(a, b, c, x);
             continue;
         }
-        for (uint32_t i = 0; i < nd->child_count; i++) stack[top++] = nd->child_first + i;
+        for (uint32_t i = 0; i < nd->child_count; i++)
+            stack[top++] = nd->child_first + i;
     }
     return parity;
 }
@@ -115,7 +116,8 @@ fl_status fl_hal3_contains(const fl_hal3 *hal, const double *xyz, size_t n, uint
 {
     if (!hal || (n > 0 && (!xyz || !where)))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_contains: NULL argument");
-    if (hal->node_count == 0) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_contains: empty tree");
+    if (hal->node_count == 0)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_contains: empty tree");
     /* Depth-first: at most (children - 1) pending nodes a level, children <= 4. */
     uint32_t *stack = fl_alloc_array(4 * (size_t)hal->depth + 16, sizeof(uint32_t));
     if (!stack) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3_contains: out of memory");
@@ -166,7 +168,8 @@ static int flintstones_disjoint(const fl_hal3_node *f, const fl_hal3_node *g)
     }
     for (int j = 0; j < ng; j++) {
         int miss = 0;
-        for (int i = 0; i < nf; i++) miss |= balls_disjoint(f->ball[i], g->ball[j]);
+        for (int i = 0; i < nf; i++)
+            miss |= balls_disjoint(f->ball[i], g->ball[j]);
         if (!miss) return 0;
     }
     return 1;
@@ -199,8 +202,8 @@ static double max_r2(const fl_hal3_node *nd)
     return n_balls(nd) == 2 ? fmax(nd->ball[0][3], nd->ball[1][3]) : nd->ball[0][3];
 }
 
-fl_status fl_hal3_intersect(const fl_hal3 *a, const fl_hal3 *b, int first_only,
-                            fl_hal3_pairs *out, fl_error *err)
+fl_status fl_hal3_intersect(const fl_hal3 *a, const fl_hal3 *b, int first_only, fl_hal3_pairs *out,
+                            fl_error *err)
 {
     if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_intersect: NULL argument");
     memset(out, 0, sizeof *out);

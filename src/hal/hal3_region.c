@@ -45,8 +45,8 @@ fl_status hal3_work_init(hal3_work *w, const fl_mesh *mesh, const fl_halfedges *
     w->heap_d = fl_alloc_array(w->heap_cap, sizeof(double));
     w->queue = fl_alloc_array(nt + 1, sizeof(uint32_t));
     if (!w->face_mark || !w->edge_mark || !w->vert_mark || !w->vert_block || !w->dist_mark ||
-        !w->seed_a || !w->seed_b || !w->label || !w->dist || !w->pred || !w->heap_v ||
-        !w->heap_d || !w->queue) {
+        !w->seed_a || !w->seed_b || !w->label || !w->dist || !w->pred || !w->heap_v || !w->heap_d ||
+        !w->queue) {
         hal3_work_free(w);
         return FL_ERR_NOMEM;
     }
@@ -160,8 +160,8 @@ static int dijkstra(hal3_work *w, uint32_t rs, uint32_t src, const uint32_t *tg,
         if (d > w->dist[v]) continue;
         for (int k = 0; k < nt; k++)
             if (tg[k] == v) left--;
-        if (v != src && ((mode < 2 && w->vert_block[v] == rs) ||
-                         (mode == 0 && w->vert_mark[v] == rs)))
+        if (v != src &&
+            ((mode < 2 && w->vert_block[v] == rs) || (mode == 0 && w->vert_mark[v] == rs)))
             continue;
         for (uint32_t c = he->vertex_start[v]; c < he->vertex_start[v + 1]; c++) {
             uint32_t h = he->vertex_corners[c];
@@ -194,7 +194,8 @@ static int shortest_tree(hal3_work *w, uint32_t rs, uint32_t src, const uint32_t
 static size_t tree_path(const hal3_work *w, uint32_t t, uint32_t *out)
 {
     size_t n = 0;
-    for (uint32_t v = t; v != FL_HAL3_NONE; v = w->pred[v]) out[n++] = v;
+    for (uint32_t v = t; v != FL_HAL3_NONE; v = w->pred[v])
+        out[n++] = v;
     for (size_t i = 0; i < n / 2; i++) {
         uint32_t x = out[i];
         out[i] = out[n - 1 - i];
@@ -221,7 +222,8 @@ static int seed_loop(hal3_work *w, uint32_t *seeds, const uint32_t *loop, size_t
                      uint8_t lab, size_t *qn)
 {
     uint32_t st = ++w->stamp;
-    for (size_t i = 0; i < n; i++) seeds[hal3_halfedge(w, loop[i], loop[(i + 1) % n])] = st;
+    for (size_t i = 0; i < n; i++)
+        seeds[hal3_halfedge(w, loop[i], loop[(i + 1) % n])] = st;
     for (size_t i = 0; i < n; i++) {
         uint32_t h = hal3_halfedge(w, loop[i], loop[(i + 1) % n]);
         uint32_t r = hal3_halfedge(w, loop[(i + 1) % n], loop[i]);
@@ -242,11 +244,13 @@ static fl_status partition(hal3_work *w, const uint32_t *faces, size_t nf, uint3
                            hal3_piece *a, hal3_piece *b, fl_error *err)
 {
     const fl_halfedges *he = w->he;
-    for (size_t i = 0; i < nf; i++) w->label[faces[i]] = 0;
+    for (size_t i = 0; i < nf; i++)
+        w->label[faces[i]] = 0;
     size_t qn = 0;
     if (seed_loop(w, w->seed_a, a->loop, a->nl, rs, 1, &qn) ||
         seed_loop(w, w->seed_b, b->loop, b->nl, rs, 2, &qn))
-        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "hal3: a triangle lies on both sides of a cut");
+        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
+                       "hal3: a triangle lies on both sides of a cut");
     for (size_t qi = 0; qi < qn; qi++) {
         uint32_t f = w->queue[qi];
         for (uint32_t k = 0; k < 3; k++) {
@@ -267,7 +271,8 @@ static fl_status partition(hal3_work *w, const uint32_t *faces, size_t nf, uint3
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
                        "hal3: %zu triangles were reached by neither side of a cut", nf - qn);
     size_t na = 0;
-    for (size_t i = 0; i < nf; i++) na += w->label[faces[i]] == 1;
+    for (size_t i = 0; i < nf; i++)
+        na += w->label[faces[i]] == 1;
     a->faces = fl_alloc_array(na + 1, sizeof(uint32_t));
     b->faces = fl_alloc_array(nf - na + 1, sizeof(uint32_t));
     if (!a->faces || !b->faces) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3: out of memory");
@@ -293,13 +298,19 @@ static fl_status pinch(hal3_work *w, const hal3_piece *pc, int u, int wc, uint32
     b->loop = fl_alloc_array(b->nl + 1, sizeof(uint32_t));
     if (!a->loop || !b->loop) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3: out of memory");
     size_t k = 0;
-    for (size_t i = pu; i < pw; i++) a->loop[k++] = pc->loop[i];
+    for (size_t i = pu; i < pw; i++)
+        a->loop[k++] = pc->loop[i];
     k = 0;
-    for (size_t i = pw; i < pc->nl; i++) b->loop[k++] = pc->loop[i];
-    for (size_t i = 0; i < pu; i++) b->loop[k++] = pc->loop[i];
-    for (int i = u; i < wc; i++) a->cpos[a->nc++] = pc->cpos[i] - (uint32_t)pu;
-    for (int i = wc; i < pc->nc; i++) b->cpos[b->nc++] = pc->cpos[i] - (uint32_t)pw;
-    for (int i = 0; i < u; i++) b->cpos[b->nc++] = pc->cpos[i] + (uint32_t)(pc->nl - pw);
+    for (size_t i = pw; i < pc->nl; i++)
+        b->loop[k++] = pc->loop[i];
+    for (size_t i = 0; i < pu; i++)
+        b->loop[k++] = pc->loop[i];
+    for (int i = u; i < wc; i++)
+        a->cpos[a->nc++] = pc->cpos[i] - (uint32_t)pu;
+    for (int i = wc; i < pc->nc; i++)
+        b->cpos[b->nc++] = pc->cpos[i] - (uint32_t)pw;
+    for (int i = 0; i < u; i++)
+        b->cpos[b->nc++] = pc->cpos[i] + (uint32_t)(pc->nl - pw);
     return partition(w, pc->faces, pc->nf, rs, a, b, err);
 }
 
@@ -309,9 +320,12 @@ fl_status hal3_cut(hal3_work *w, const hal3_piece *pc, int u, int wc, uint32_t v
     memset(a, 0, sizeof *a);
     memset(b, 0, sizeof *b);
     uint32_t rs = ++w->stamp;
-    for (size_t i = 0; i < pc->nf; i++) w->face_mark[pc->faces[i]] = rs;
-    for (size_t i = 0; i < pc->nl; i++) w->vert_mark[pc->loop[i]] = rs;
-    for (int i = 0; i < pc->nc; i++) w->vert_block[pc->loop[pc->cpos[i]]] = rs;
+    for (size_t i = 0; i < pc->nf; i++)
+        w->face_mark[pc->faces[i]] = rs;
+    for (size_t i = 0; i < pc->nl; i++)
+        w->vert_mark[pc->loop[i]] = rs;
+    for (int i = 0; i < pc->nc; i++)
+        w->vert_block[pc->loop[pc->cpos[i]]] = rs;
     if (mark_loop_edges(w, pc->loop, pc->nl, rs))
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "hal3: a loop edge is not a mesh edge");
     size_t pu = pc->cpos[u], pw = pc->cpos[wc];
@@ -334,7 +348,8 @@ fl_status hal3_cut(hal3_work *w, const hal3_piece *pc, int u, int wc, uint32_t v
          * (paths sharing a prefix would leave a corner at the end of a slit). */
         if (!shortest_tree(w, rs, via, &vu, 1)) goto nopath;
         size_t l1 = tree_path(w, vu, path); /* via .. vu, reversed below to vu .. via */
-        for (size_t i = 1; i < l1; i++) w->vert_block[path[i]] = rs;
+        for (size_t i = 1; i < l1; i++)
+            w->vert_block[path[i]] = rs;
         if (!shortest_tree(w, rs, via, &vw, 1)) goto nopath;
         for (size_t i = 0; i < l1 / 2; i++) {
             uint32_t x = path[i];
@@ -344,7 +359,8 @@ fl_status hal3_cut(hal3_work *w, const hal3_piece *pc, int u, int wc, uint32_t v
         iv = l1 - 1;
         len = l1 - 1 + tree_path(w, vw, path + l1 - 1);
     }
-    for (size_t i = 0; i + 1 < len; i++) w->edge_mark[edge_of(w, path[i], path[i + 1])] = rs;
+    for (size_t i = 0; i + 1 < len; i++)
+        w->edge_mark[edge_of(w, path[i], path[i + 1])] = rs;
     size_t in = len >= 2 ? len - 2 : 0; /* interior vertices of the path */
     a->nl = pw - pu + 1 + in;
     b->nl = pc->nl - (pw - pu) + 1 + in;
@@ -355,16 +371,24 @@ fl_status hal3_cut(hal3_work *w, const hal3_piece *pc, int u, int wc, uint32_t v
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3: out of memory");
     }
     size_t k = 0;
-    for (size_t i = pu; i <= pw; i++) a->loop[k++] = pc->loop[i];
-    for (size_t i = 0; i < in; i++) a->loop[k++] = path[len - 2 - i];
-    for (int i = u; i <= wc; i++) a->cpos[a->nc++] = pc->cpos[i] - (uint32_t)pu;
+    for (size_t i = pu; i <= pw; i++)
+        a->loop[k++] = pc->loop[i];
+    for (size_t i = 0; i < in; i++)
+        a->loop[k++] = path[len - 2 - i];
+    for (int i = u; i <= wc; i++)
+        a->cpos[a->nc++] = pc->cpos[i] - (uint32_t)pu;
     if (via != FL_HAL3_NONE) a->cpos[a->nc++] = (uint32_t)(pw - pu + 1 + (len - 2 - iv));
     k = 0;
-    for (size_t i = pw; i < pc->nl; i++) b->loop[k++] = pc->loop[i];
-    for (size_t i = 0; i <= pu; i++) b->loop[k++] = pc->loop[i];
-    for (size_t i = 0; i < in; i++) b->loop[k++] = path[1 + i];
-    for (int i = wc; i < pc->nc; i++) b->cpos[b->nc++] = pc->cpos[i] - (uint32_t)pw;
-    for (int i = 0; i <= u; i++) b->cpos[b->nc++] = pc->cpos[i] + (uint32_t)(pc->nl - pw);
+    for (size_t i = pw; i < pc->nl; i++)
+        b->loop[k++] = pc->loop[i];
+    for (size_t i = 0; i <= pu; i++)
+        b->loop[k++] = pc->loop[i];
+    for (size_t i = 0; i < in; i++)
+        b->loop[k++] = path[1 + i];
+    for (int i = wc; i < pc->nc; i++)
+        b->cpos[b->nc++] = pc->cpos[i] - (uint32_t)pw;
+    for (int i = 0; i <= u; i++)
+        b->cpos[b->nc++] = pc->cpos[i] + (uint32_t)(pc->nl - pw);
     if (via != FL_HAL3_NONE) b->cpos[b->nc++] = (uint32_t)(pc->nl - pw + pu + 1 + (iv - 1));
     free(path);
     return partition(w, pc->faces, pc->nf, rs, a, b, err);
@@ -408,7 +432,8 @@ fl_status hal3_cut_sphere(hal3_work *w, uint32_t i, uint32_t j, uint32_t k, hal3
             goto done;
         }
         size_t l = tree_path(w, ends[s + 1], cyc + n);
-        for (size_t t = 0; t < l; t++) w->vert_mark[cyc[n + t]] = rs;
+        for (size_t t = 0; t < l; t++)
+            w->vert_mark[cyc[n + t]] = rs;
         n += l - 1; /* the end vertex starts the next path */
     }
     if (mark_loop_edges(w, cyc, n, rs)) {

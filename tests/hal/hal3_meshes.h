@@ -42,7 +42,8 @@ static uint32_t hal3_mid(fl_mesh *m, uint32_t *keys, uint32_t *vals, size_t cap,
         m->xyz[3 * (size_t)v + k] = c;
     }
     double *p = m->xyz + 3 * (size_t)v, r = sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-    for (int k = 0; k < 3; k++) p[k] /= r;
+    for (int k = 0; k < 3; k++)
+        p[k] /= r;
     vals[h] = v;
     return v;
 }
@@ -59,7 +60,8 @@ static fl_mesh hal3_icosphere(int levels)
                                        {7, 10, 3}, {7, 6, 10}, {7, 11, 6}, {11, 0, 6}, {0, 1, 6},
                                        {6, 1, 10}, {9, 0, 11}, {9, 11, 2}, {9, 2, 5},  {7, 2, 11}};
     size_t nt = 20;
-    for (int l = 0; l < levels; l++) nt *= 4;
+    for (int l = 0; l < levels; l++)
+        nt *= 4;
     fl_mesh m;
     m.xyz = malloc((nt / 2 + 2) * 3 * sizeof(double));
     m.tri = malloc(nt * 3 * sizeof(uint32_t));
@@ -74,7 +76,8 @@ static fl_mesh hal3_icosphere(int levels)
         uint32_t *nt4 = malloc(4 * 3 * m.triangle_count * sizeof(uint32_t));
         for (size_t t = 0; t < m.triangle_count; t++) {
             uint32_t a = m.tri[3 * t], b = m.tri[3 * t + 1], c = m.tri[3 * t + 2];
-            uint32_t ab = hal3_mid(&m, keys, vals, cap, a, b), bc = hal3_mid(&m, keys, vals, cap, b, c),
+            uint32_t ab = hal3_mid(&m, keys, vals, cap, a, b),
+                     bc = hal3_mid(&m, keys, vals, cap, b, c),
                      ca = hal3_mid(&m, keys, vals, cap, c, a);
             uint32_t q[12] = {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca};
             memcpy(nt4 + 12 * t, q, sizeof q);
@@ -121,7 +124,8 @@ static fl_mesh hal3_cube(int n)
                         size_t key = ((size_t)p[0] * g + (size_t)p[1]) * g + (size_t)p[2];
                         if (id[key] == UINT32_MAX) {
                             id[key] = (uint32_t)m.vertex_count++;
-                            for (int k = 0; k < 3; k++) m.xyz[3 * (size_t)id[key] + k] = p[k];
+                            for (int k = 0; k < 3; k++)
+                                m.xyz[3 * (size_t)id[key] + k] = p[k];
                         }
                         q[c] = id[key];
                     }

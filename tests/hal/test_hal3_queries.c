@@ -56,10 +56,14 @@ static uint8_t brute_inside(const fl_mesh *m, const double *x)
 static fl_mesh query_mesh(int i)
 {
     switch (i) {
-    case 0: return hal3_blob(3, 1.0, 1.0, 1.0, 0.15);
-    case 1: return hal3_cube(3);
-    case 2: return hal3_peanut();
-    default: return hal3_blob(2, 2.0, 1.0, 0.6, 0.0);
+    case 0:
+        return hal3_blob(3, 1.0, 1.0, 1.0, 0.15);
+    case 1:
+        return hal3_cube(3);
+    case 2:
+        return hal3_peanut();
+    default:
+        return hal3_blob(2, 2.0, 1.0, 0.6, 0.0);
     }
 }
 
@@ -84,7 +88,8 @@ static void test_hal3_inclusion_equals_brute_force_on_random_and_surface_points(
         double *q = malloc(3 * n * sizeof(double));
         for (size_t k = 0; k < n; k++) {
             if (k % 5 == 0) { /* a vertex: on the surface */
-                memcpy(q + 3 * k, V(&m, m.tri[(k * 7) % (3 * m.triangle_count)]), 3 * sizeof(double));
+                memcpy(q + 3 * k, V(&m, m.tri[(k * 7) % (3 * m.triangle_count)]),
+                       3 * sizeof(double));
             } else if (k % 5 == 1) { /* a vertex's coordinates mixed: on ray-degenerate lines */
                 const double *a = V(&m, m.tri[(k * 11) % (3 * m.triangle_count)]);
                 const double *b = V(&m, m.tri[(k * 13) % (3 * m.triangle_count)]);
@@ -98,7 +103,8 @@ static void test_hal3_inclusion_equals_brute_force_on_random_and_surface_points(
         }
         if (i == 1) /* the cube's faces are axis planes: grid points lie on them exactly */
             for (size_t k = 2; k < n; k += 5)
-                for (int c = 0; c < 3; c++) q[3 * k + c] = floor(q[3 * k + c] * 2 + 0.5) / 2;
+                for (int c = 0; c < 3; c++)
+                    q[3 * k + c] = floor(q[3 * k + c] * 2 + 0.5) / 2;
         uint8_t *w = malloc(n);
         CHECK_STATUS(fl_hal3_contains(&hal, q, n, w, &err), FL_OK, &err);
         size_t diff = 0, count[3] = {0, 0, 0};
@@ -160,12 +166,15 @@ static void test_hal3_intersecting_pairs_equal_brute_force(void)
 {
     fl_mesh a = hal3_blob(2, 1.0, 1.0, 1.0, 0.1);
     fl_mesh b = hal3_blob(2, 1.5, 0.8, 0.7, 0.05);
-    for (size_t v = 0; v < b.vertex_count; v++) b.xyz[3 * v] += 1.1, b.xyz[3 * v + 1] += 0.3;
+    for (size_t v = 0; v < b.vertex_count; v++)
+        b.xyz[3 * v] += 1.1, b.xyz[3 * v + 1] += 0.3;
     check_intersection(&a, &b, 1);
     fl_mesh c = hal3_cube(2), d = hal3_cube(2);
-    for (size_t v = 0; v < d.vertex_count; v++) d.xyz[3 * v] += 2; /* touching along a face */
+    for (size_t v = 0; v < d.vertex_count; v++)
+        d.xyz[3 * v] += 2; /* touching along a face */
     check_intersection(&c, &d, 1);
-    for (size_t v = 0; v < d.vertex_count; v++) d.xyz[3 * v] += 0.5; /* apart */
+    for (size_t v = 0; v < d.vertex_count; v++)
+        d.xyz[3 * v] += 0.5; /* apart */
     check_intersection(&c, &d, 0);
     fl_mesh_free(&a);
     fl_mesh_free(&b);

@@ -10,17 +10,23 @@
 static fl_mesh test_mesh(int i)
 {
     switch (i) {
-    case 0: return hal3_icosphere(2);
-    case 1: return hal3_blob(3, 2.0, 1.0, 0.6, 0.0);  /* ellipsoid */
-    case 2: return hal3_blob(2, 1.0, 1.0, 1.0, 0.15); /* noisy sphere */
-    case 3: return hal3_cube(4);
-    case 4: return hal3_peanut();
-    default: return hal3_icosphere(0);
+    case 0:
+        return hal3_icosphere(2);
+    case 1:
+        return hal3_blob(3, 2.0, 1.0, 0.6, 0.0); /* ellipsoid */
+    case 2:
+        return hal3_blob(2, 1.0, 1.0, 1.0, 0.15); /* noisy sphere */
+    case 3:
+        return hal3_cube(4);
+    case 4:
+        return hal3_peanut();
+    default:
+        return hal3_icosphere(0);
     }
 }
 
-static const char *mesh_name[N_MESHES] = {"icosphere2", "ellipsoid", "noisy", "cube4", "peanut",
-                                          "icosahedron"};
+static const char *mesh_name[N_MESHES] = {"icosphere2", "ellipsoid", "noisy",
+                                          "cube4",      "peanut",    "icosahedron"};
 
 static int build(const fl_mesh *m, fl_hal3 *hal, const char *name)
 {
@@ -59,7 +65,8 @@ static void test_hal3_leaves_are_the_original_triangles_once(void)
             CHECK_MSG(rot >= 0, "%s: leaf %zu corners differ from its triangle", mesh_name[i], n);
         }
         CHECK_EQ_INT(leaves, m.triangle_count);
-        for (size_t t = 0; t < m.triangle_count; t++) CHECK_EQ_INT(seen[t], 1);
+        for (size_t t = 0; t < m.triangle_count; t++)
+            CHECK_EQ_INT(seen[t], 1);
         /* The approximation at the deepest level has the original triangles only. */
         fl_mesh ap;
         double e = -1;
@@ -86,8 +93,8 @@ static void check_closed(const fl_mesh *ap, const char *what, const char *name, 
     fl_error err;
     fl_mesh_check_options o = {.skip_self_intersections = 1};
     CHECK_STATUS(fl_mesh_check(ap, &o, &r, &err), FL_OK, &err);
-    CHECK_MSG(r.closed && r.oriented, "%s %s %ld: %zu boundary edges, %zu misoriented", name,
-              what, level, r.boundary_edges, r.misoriented_edges);
+    CHECK_MSG(r.closed && r.oriented, "%s %s %ld: %zu boundary edges, %zu misoriented", name, what,
+              level, r.boundary_edges, r.misoriented_edges);
     CHECK_MSG(r.manifold, "%s %s %ld: %zu non-manifold edges, %zu non-manifold vertices", name,
               what, level, r.nonmanifold_edges, r.nonmanifold_vertices);
     fl_mesh_report_free(&r);
@@ -109,9 +116,12 @@ static size_t crack_edges(const fl_mesh *ap)
     /* |multiset difference| / 2 = directed edges without a partner */
     size_t i = 0, j = 0;
     while (i < n || j < n) {
-        if (j == n || (i < n && e[i] < r[j])) cracks++, i++;
-        else if (i == n || r[j] < e[i]) j++;
-        else i++, j++;
+        if (j == n || (i < n && e[i] < r[j]))
+            cracks++, i++;
+        else if (i == n || r[j] < e[i])
+            j++;
+        else
+            i++, j++;
     }
     free(e);
     free(r);
@@ -155,11 +165,19 @@ static void test_hal3_levels_are_closed_up_to_coalescing_paths(void)
 /* Sample points of a triangle: corners, edge points and interior points. */
 static void triangle_samples(const double *a, const double *b, const double *c, double *out)
 {
-    static const double w[10][3] = {{1, 0, 0},   {0, 1, 0},   {0, 0, 1},     {.5, .5, 0},
-                                    {0, .5, .5}, {.5, 0, .5}, {1. / 3, 1. / 3, 1. / 3},
-                                    {.8, .1, .1}, {.1, .8, .1}, {.1, .1, .8}};
+    static const double w[10][3] = {{1, 0, 0},
+                                    {0, 1, 0},
+                                    {0, 0, 1},
+                                    {.5, .5, 0},
+                                    {0, .5, .5},
+                                    {.5, 0, .5},
+                                    {1. / 3, 1. / 3, 1. / 3},
+                                    {.8, .1, .1},
+                                    {.1, .8, .1},
+                                    {.1, .1, .8}};
     for (int s = 0; s < 10; s++)
-        for (int k = 0; k < 3; k++) out[3 * s + k] = w[s][0] * a[k] + w[s][1] * b[k] + w[s][2] * c[k];
+        for (int k = 0; k < 3; k++)
+            out[3 * s + k] = w[s][0] * a[k] + w[s][1] * b[k] + w[s][2] * c[k];
 }
 
 static void test_hal3_every_flintstone_contains_its_subtree_triangles(void)
@@ -178,7 +196,8 @@ static void test_hal3_every_flintstone_contains_its_subtree_triangles(void)
             stack[top++] = n;
             while (top > 0) {
                 const fl_hal3_node *d = &hal.nodes[stack[--top]];
-                for (uint32_t c = 0; c < d->child_count; c++) stack[top++] = d->child_first + c;
+                for (uint32_t c = 0; c < d->child_count; c++)
+                    stack[top++] = d->child_first + c;
                 if (d->kind != FL_HAL3_LEAF) continue;
                 faces++;
                 const uint32_t *t = m.tri + 3 * (size_t)d->face;
@@ -269,7 +288,8 @@ static void test_hal3_adaptive_approximation_is_within_its_certified_error(void)
             for (size_t t = 0; t < m.triangle_count && bound > 0; t += 1 + m.triangle_count / 60) {
                 double x[3] = {0, 0, 0};
                 for (int k = 0; k < 3; k++)
-                    for (int c = 0; c < 3; c++) x[c] += m.xyz[3 * (size_t)m.tri[3 * t + k] + c] / 3;
+                    for (int c = 0; c < 3; c++)
+                        x[c] += m.xyz[3 * (size_t)m.tri[3 * t + k] + c] / 3;
                 double d = INFINITY;
                 for (size_t u = 0; u < ap.triangle_count; u++)
                     d = fmin(d, grid_distance(x, ap.xyz + 3 * (size_t)ap.tri[3 * u],

@@ -427,14 +427,13 @@ static fl_status apply_cuts(build *b, hal3_piece *pcs, int *np, const uint32_t (
                             int ncuts, fl_error *err)
 {
     for (int c = 0; c < ncuts; c++) {
-        int found = 0;
-        for (int p = 0; p < *np && !found; p++) {
+        /* The piece holding both corners; a piece of three corners is a child already (when
+         * coalescing paths merged two split vertices, the cut would run along its side), and a
+         * cut whose corners vanished with a dropped degenerate piece is not needed. */
+        for (int p = 0; p < *np; p++) {
             int iu = corner_index(&pcs[p], cuts[c][0], -1);
             int iw = corner_index(&pcs[p], cuts[c][1], iu);
             if (iu < 0 || iw < 0) continue;
-            found = 1;
-            /* A piece of three corners is a child already: after coalescing paths merged two
-             * split vertices, the cut would run along its side. */
             if (pcs[p].nc < 4 && cuts[c][2] == FL_HAL3_NONE) continue;
             if (iu > iw) {
                 int t = iu;
@@ -452,7 +451,6 @@ static fl_status apply_cuts(build *b, hal3_piece *pcs, int *np, const uint32_t (
             pcs[(*np)++] = bb;
             break;
         }
-        (void)found; /* a cut whose corners vanished with a discarded piece is not needed */
     }
     return FL_OK;
 }

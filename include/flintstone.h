@@ -1507,6 +1507,136 @@ fl_status fl_g1_read_bez(const char *path, fl_g1_surface *out, fl_error *err);
 /* end of smooth */
 
 
+/* ==== hal3 ================================================================================ */
+/* (section owned by src/hal, files hal3_*; docs/hal.md "3D")
+ *
+ * The flintstone tree of a closed, oriented, manifold genus-0 triangle mesh (thesis §7.3-7.4,
+ * HAL paper §4-5). Level 0 is the triangle v_i v_j v_k of three vertices on a ball containing
+ * all vertices, twice: the three shortest edge paths between them cut the surface into two open
+ * polyhedra, one approximated by (i, j, k), the other by (i, k, j). Every node is an approximating
+ * triangle (its corners are mesh vertices, oriented like the surface) together with the part of
+ * the surface it stands for, bounded by three edge paths between its corners. A node is refined
+ * (Algorithm 7.2, level by level) by a three-split at an interior vertex v_q of its part, or by
+ * splits at one, two or three sides at a vertex of the side's path when angles are below the
+ * threshold; the neighbour across a split side splits at the same vertex, so the levels are
+ * crack-free except where shortest paths coalesce (a few edges; docs/hal.md "Known limits"):
+ * level 0 and the deepest level are closed manifolds. Pieces left without triangles by
+ * coalescing paths stay as nodes with face_count 0 (empty flintstone) so their neighbours' sides
+ * stay matched. The leaves are the original triangles. A node's flintstone
+ * (Def. 7.5) is built from the balls through its corners and v_q / v_r, stored in floating point
+ * enlarged so that it provably contains every original triangle of its subtree. */
+
+/* Shape of a node's flintstone. */
+enum {
+    FL_HAL3_TWO_BALLS = 0,     /* ball[0] ∩ ball[1] (Def. 7.5 with the ± operator giving ∩) */
+    FL_HAL3_BALL_HALFSPACE = 1, /* ball[0] ∩ the closed half-space of the corners' plane on
+                                   side `side` (all vertices on one side) */
+    FL_HAL3_BALL_UNION = 2,    /* ball[0] ∪ ball[1] (± giving ∪); each triangle of the part
+                                  lies in one of the two balls */
+    FL_HAL3_BALL = 3,          /* ball[0] alone: corners collinear */
+    FL_HAL3_LEAF = 4           /* an original triangle; ball[0] encloses it */
+};
+
+/* One node. Children are the nodes child_first .. child_first + child_count - 1 (a leaf has
+ * none). */
+typedef struct fl_hal3_node {
+    uint32_t v[3];         /* corners (mesh vertex indices), counterclockwise from outside */
+    uint32_t level;        /* 0 for the two root triangles */
+    int32_t parent;        /* -1 for the roots */
+    uint32_t child_first, child_count;
+    uint32_t face;         /* leaf: its triangle index in hal->mesh; else UINT32_MAX */
+    uint32_t face_count;   /* original triangles in the subtree */
+    uint32_t split;        /* vertex of the three-split, UINT32_MAX for a side split or leaf */
+    uint8_t kind;          /* FL_HAL3_* above */
+    int8_t side;           /* FL_HAL3_BALL_HALFSPACE: fl_orient3d(v0, v1, v2, x) of its points */
+    double ball[2][4];     /* centre x, y, z and squared radius (enlarged); ball[1] for the two-
+                              ball kinds */
+    double width[2];       /* Def. 7.6 widths w1, w2 of the balls (w2 = 0 for a half-space) */
+    double error;          /* certified bound on the distance of every point of the node's part
+                              of the surface to its triangle (0 for a leaf) */
+} fl_hal3_node;
+
+/* A flintstone tree: a copy of the mesh, nodes (the two roots are nodes 0 and 1), and the
+ * "ties" of crack-free refinement: pairs of nodes of one level sharing a side that is split
+ * when they are refined (an adaptive approximation refines both or neither). */
+typedef struct fl_hal3 {
+    fl_mesh mesh;
+    size_t node_count;
+    fl_hal3_node *nodes;
+    size_t tie_count;
+    uint32_t *ties;        /* 2 per tie: node indices */
+    uint32_t depth;        /* deepest level: the approximation at this level is the mesh */
+    double ball[4];        /* the level-0 ball through v_i, v_j, v_k containing every vertex */
+} fl_hal3;
+
+/* Options; all zero is the default. */
+typedef struct fl_hal3_options {
+    double angle_threshold;  /* radians; angles below it are not split (0: pi/4) */
+    fl_progress_fn progress; /* called once a level; may be NULL */
+    void *progress_user;
+} fl_hal3_options;
+
+/* Builds the flintstone tree of a closed triangle mesh (Algorithm 7.2). `opt` may be NULL.
+ * The mesh must be closed, manifold, oriented, connected, of genus 0, without degenerate
+ * triangles; otherwise FL_ERR_INPUT names the problem (e.g. "genus 1: the HAL tree needs a
+ * sphere-like surface"). Also FL_ERR_INPUT for NaN/Inf coordinates, FL_ERR_USAGE for NULL
+ * arguments or a threshold outside [0, pi/3], FL_ERR_ALGORITHM when cancelled or when the
+ * refinement cannot proceed (the message says where), FL_ERR_NOMEM. On failure *out is zeroed.
+ * Free with fl_hal3_free. */
+fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3 *out,
+                        fl_error *err);
+
+/* Releases the tree's arrays and zeroes *hal; a zeroed struct is a no-op. */
+void fl_hal3_free(fl_hal3 *hal);
+
+/* 0 when x is provably outside node's flintstone, 1 when it may be inside (every point of
+ * the node's triangles gives 1). */
+int fl_hal3_flintstone_may_contain(const fl_hal3 *hal, uint32_t node, const double *x);
+
+/* The level-`level` approximation: the triangles of the nodes of that level and of the leaves
+ * above it, on the used vertices (coordinates copied, vertices renumbered in order of first
+ * use); crack-free up to the limit above. level >= hal->depth gives the original triangles.
+ * *error (may be NULL) receives the largest node error of the cut (0 at the finest level). Free
+ * with fl_mesh_free. Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
+fl_status fl_hal3_approximate_level(const fl_hal3 *hal, uint32_t level, fl_mesh *out,
+                                    double *error, fl_error *err);
+
+/* The adaptive approximation (§7.3.3): nodes are refined while their error exceeds max_error,
+ * and a node is also refined when a tie partner is (so no split side opens a crack); max_error
+ * 0 refines every node and gives the mesh itself. *error and *level (each may be NULL) receive
+ * the certified error (<= max_error: every point of the surface is within it of the
+ * approximation) and the deepest level used. Errors: FL_ERR_USAGE for a negative or NaN
+ * max_error, FL_ERR_NOMEM. */
+fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mesh *out,
+                                    double *error, uint32_t *level, fl_error *err);
+
+enum { FL_HAL3_OUTSIDE = 0, FL_HAL3_INSIDE = 1, FL_HAL3_BOUNDARY = 2 };
+
+/* Point-in-polyhedron for the n points xyz[3k..3k+2]: FL_HAL3_BOUNDARY when the point lies on a
+ * triangle (exactly), else the parity of the crossings of a ray in +x direction, symbolically
+ * perturbed so that it misses every edge, decided with fl_orient2d/fl_orient3d. The flintstones
+ * prune the triangles the ray cannot reach; the answers equal the brute-force test's. Errors:
+ * FL_ERR_USAGE, FL_ERR_INPUT for a NaN/Inf query. */
+fl_status fl_hal3_contains(const fl_hal3 *hal, const double *xyz, size_t n, uint8_t *where,
+                           fl_error *err);
+
+/* Intersecting triangle pairs: pairs[2k] a triangle of a, pairs[2k+1] one of b. */
+typedef struct fl_hal3_pairs {
+    size_t count;
+    uint32_t *pairs;
+} fl_hal3_pairs;
+
+/* Releases the pairs and zeroes *pairs; a zeroed struct is a no-op. */
+void fl_hal3_pairs_free(fl_hal3_pairs *pairs);
+
+/* Hierarchical intersection (§7.4, the ∩/∪ cases): every pair of closed triangles, one of a and
+ * one of b, with a common point (decided exactly), sorted. first_only != 0 stops at the first
+ * pair. Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
+fl_status fl_hal3_intersect(const fl_hal3 *a, const fl_hal3 *b, int first_only,
+                            fl_hal3_pairs *out, fl_error *err);
+
+/* end of hal3 */
+
 #ifdef __cplusplus
 }
 #endif

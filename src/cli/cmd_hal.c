@@ -1,6 +1,7 @@
-/* The flintstone (HAL) tree commands on polygons (thesis ch. 7, HAL paper §3, §5):
- *   flintstone hal POLYGON (--level L | --error E) [-o OUT]     approximation with certified error
- *   flintstone inside POLYGON QUERIES [-o OUT.csv]              hierarchical point inclusion
+/* The flintstone (HAL) tree commands (thesis ch. 7, HAL paper §3-§5), on polygons (2D) or on
+ * closed genus-0 triangle meshes (3D, chosen by the input's extension .off .obj .ply .stl):
+ *   flintstone hal INPUT (--level L | --error E) [-o OUT]       approximation with certified error
+ *   flintstone inside INPUT QUERIES [-o OUT.csv]                hierarchical point inclusion
  *   flintstone intersect A B [--first]                          hierarchical intersection */
 #include <stdlib.h>
 #include <string.h>
@@ -11,6 +12,11 @@
 
 static const char *hal_usage =
     "usage: flintstone hal POLYGON (--level L | --error E) [-o OUT] [--json] [--quiet]\n"
+    "       flintstone hal MESH (--level L | --error E) [-o OUT.off] [--json] [--quiet]\n"
+    "\n"
+    "A MESH (.off .obj .ply .stl; closed, manifold, genus 0) gets the 3D flintstone tree\n"
+    "(thesis §7.3) and an approximating closed mesh; --json then has faces, levels,\n"
+    "approx_faces, error, seconds.\n"
     "\n"
     "Builds the flintstone tree of a polygon (.xy .geojson; holes are separate boundaries) and\n"
     "writes an approximating polygon: the approximation of level L (0 is the coarsest: two\n"
@@ -25,6 +31,9 @@ static const char *hal_usage =
 
 static const char *inside_usage =
     "usage: flintstone inside POLYGON QUERIES [-o OUT.csv] [--json] [--quiet]\n"
+    "       flintstone inside MESH QUERIES [-o OUT.csv] [--json] [--quiet]\n"
+    "\n"
+    "With a MESH the queries are 3D points and the CSV rows are x,y,z,where.\n"
     "\n"
     "Classifies each query point (a 2D point file) against the polygon through its flintstone\n"
     "tree: inside, outside, or on the boundary (decided exactly). The CSV has one row a query:\n"
@@ -35,11 +44,70 @@ static const char *inside_usage =
 static const char *intersect_usage =
     "usage: flintstone intersect A B [--first] [--json] [--quiet]\n"
     "\n"
+    "A and B are both polygons or both meshes (then triangle pairs are counted).\n"
+    "\n"
     "Do the boundaries of polygons A and B intersect (edges touching count)? Descends both\n"
     "flintstone trees together; --first stops at the first intersecting edge pair, otherwise\n"
     "every pair is counted.\n"
     "\n"
     "example: flintstone intersect a.geojson b.geojson --json\n";
+
+/* 1 when the path names a triangle mesh (the 3D commands), by extension. */
+static int is_mesh_path(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    if (!dot) return 0;
+    static const char *ext[] = {".off", ".obj", ".ply", ".stl", ".OFF", ".OBJ", ".PLY", ".STL"};
+    for (size_t i = 0; i < sizeof ext / sizeof ext[0]; i++)
+        if (!strcmp(dot, ext[i])) return 1;
+    return 0;
+}
+
+/* Reads a mesh file and builds its 3D tree; prints the error and returns its exit code. */
+static int load_hal3(const char *path, fl_hal3 *hal)
+{
+    fl_error err;
+    fl_mesh mesh;
+    if (fl_read_mesh(path, &mesh, &err)) return cli_report(&err);
+    fl_status st = fl_hal3_build(&mesh, NULL, hal, &err);
+    if (st) snprintf(err.file, sizeof err.file, "%s", path);
+    fl_mesh_free(&mesh);
+    return st ? cli_report(&err) : 0;
+}
+
+static int hal3_command(const char *input, const char *level_s, size_t level, double max_error,
+                        const cli_common *c)
+{
+    double t0 = cli_now();
+    fl_hal3 hal;
+    int code = load_hal3(input, &hal);
+    if (code) return code;
+    fl_error err;
+    fl_mesh approx = {0};
+    double error = 0;
+    uint32_t used_level = (uint32_t)level;
+    fl_status st =
+        level_s ? fl_hal3_approximate_level(&hal, (uint32_t)level, &approx, &error, &err)
+                : fl_hal3_approximate_error(&hal, max_error, &approx, &error, &used_level, &err);
+    if (st == FL_OK && c->output) st = fl_write_mesh(c->output, &approx, &err);
+    if (st == FL_OK && c->json) {
+        cli_json j;
+        cli_json_begin(&j, stdout);
+        cli_json_uint(&j, "faces", hal.mesh.triangle_count);
+        cli_json_uint(&j, "levels", hal.depth);
+        cli_json_uint(&j, "approx_faces", approx.triangle_count);
+        cli_json_double(&j, "error", error);
+        cli_json_double(&j, "seconds", cli_now() - t0);
+        cli_json_end(&j);
+    } else if (st == FL_OK && !c->quiet) {
+        printf("%zu triangles, tree depth %u: approximation with %zu triangles, certified error "
+               "%.6g\n",
+               hal.mesh.triangle_count, hal.depth, approx.triangle_count, error);
+    }
+    fl_mesh_free(&approx);
+    fl_hal3_free(&hal);
+    return st ? cli_report(&err) : 0;
+}
 
 /* Reads a polygon file and builds its tree; prints the error and returns its exit code. */
 static int load_hal(const char *path, fl_hal2 *hal)
@@ -110,6 +178,7 @@ int cmd_hal(int argc, char **argv)
     if (error_s && (cli_parse_double(error_s, &max_error) || max_error < 0))
         return cli_fail(1, "hal: --error takes a number >= 0, got '%s'", error_s);
 
+    if (is_mesh_path(input)) return hal3_command(input, level_s, level, max_error, &c);
     double t0 = cli_now();
     fl_hal2 hal;
     int code = load_hal(input, &hal);
@@ -146,6 +215,86 @@ static const char *where_name(uint8_t w)
     return w == FL_HAL2_INSIDE ? "inside" : w == FL_HAL2_BOUNDARY ? "boundary" : "outside";
 }
 
+static fl_status write_where_csv3(const char *path, const fl_points *q, const uint8_t *where,
+                                  fl_error *err)
+{
+    fl_out_file out;
+    fl_status st = fl_out_open(&out, path, 0, err);
+    if (st) return st;
+    fputs("x,y,z,where\n", out.fp);
+    for (size_t i = 0; i < q->count; i++)
+        fprintf(out.fp, "%.17g,%.17g,%.17g,%s\n", q->coords[3 * i], q->coords[3 * i + 1],
+                q->coords[3 * i + 2], where_name(where[i]));
+    return fl_out_commit(&out, err);
+}
+
+static int inside3(const char *mesh_path, const fl_points *q, const cli_common *c, double t0)
+{
+    if (q->dim != 3) return cli_fail(2, "query points must be 3D (x y z a line) for a mesh");
+    fl_hal3 hal;
+    int code = load_hal3(mesh_path, &hal);
+    if (code) return code;
+    fl_error err;
+    uint8_t *where = fl_alloc_array(q->count + 1, 1);
+    fl_status st = where ? fl_hal3_contains(&hal, q->coords, q->count, where, &err)
+                         : fl_fail(&err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    double seconds = cli_now() - t0;
+    if (st == FL_OK && c->output) st = write_where_csv3(c->output, q, where, &err);
+    if (st == FL_OK) {
+        size_t count[3] = {0, 0, 0};
+        for (size_t i = 0; i < q->count; i++) count[where[i]]++;
+        if (c->json) {
+            cli_json j;
+            cli_json_begin(&j, stdout);
+            cli_json_uint(&j, "queries", q->count);
+            cli_json_uint(&j, "inside", count[FL_HAL3_INSIDE]);
+            cli_json_uint(&j, "boundary", count[FL_HAL3_BOUNDARY]);
+            cli_json_uint(&j, "outside", count[FL_HAL3_OUTSIDE]);
+            cli_json_double(&j, "seconds", seconds);
+            cli_json_end(&j);
+        } else if (!c->quiet) {
+            printf("%zu queries: %zu inside, %zu on the surface, %zu outside\n", q->count,
+                   count[FL_HAL3_INSIDE], count[FL_HAL3_BOUNDARY], count[FL_HAL3_OUTSIDE]);
+        }
+    }
+    code = st ? cli_report(&err) : 0;
+    fl_hal3_free(&hal);
+    free(where);
+    return code;
+}
+
+static int intersect3(const char *pa, const char *pb, int first, const cli_common *c, double t0)
+{
+    fl_hal3 a, b;
+    int code = load_hal3(pa, &a);
+    if (code) return code;
+    if ((code = load_hal3(pb, &b))) {
+        fl_hal3_free(&a);
+        return code;
+    }
+    fl_error err;
+    fl_hal3_pairs pairs = {0};
+    fl_status st = fl_hal3_intersect(&a, &b, first, &pairs, &err);
+    if (st == FL_OK && c->json) {
+        cli_json j;
+        cli_json_begin(&j, stdout);
+        cli_json_bool(&j, "intersect", pairs.count > 0);
+        cli_json_uint(&j, "pairs", pairs.count);
+        cli_json_double(&j, "seconds", cli_now() - t0);
+        cli_json_end(&j);
+    } else if (st == FL_OK && !c->quiet) {
+        if (pairs.count == 0)
+            printf("the surfaces do not intersect\n");
+        else
+            printf("the surfaces intersect: %zu%s intersecting triangle pair%s\n", pairs.count,
+                   first ? " (first found)" : "", pairs.count == 1 ? "" : "s");
+    }
+    fl_hal3_pairs_free(&pairs);
+    fl_hal3_free(&a);
+    fl_hal3_free(&b);
+    return st ? cli_report(&err) : 0;
+}
+
 static fl_status write_where_csv(const char *path, const fl_points *q, const uint8_t *where,
                                  fl_error *err)
 {
@@ -172,6 +321,11 @@ int cmd_inside(int argc, char **argv)
     fl_points q;
     double t0 = cli_now();
     if (fl_read_points(pos[1], &q, &err)) return cli_report(&err);
+    if (is_mesh_path(pos[0])) {
+        int r = inside3(pos[0], &q, &c, t0);
+        fl_points_free(&q);
+        return r;
+    }
     if (q.dim != 2) {
         fl_points_free(&q);
         return cli_fail(2, "%s: query points must be 2D (x y a line)", pos[1]);
@@ -223,6 +377,9 @@ int cmd_intersect(int argc, char **argv)
         return 0;
     }
     double t0 = cli_now();
+    if (is_mesh_path(pos[0]) != is_mesh_path(pos[1]))
+        return cli_fail(1, "intersect: A and B must both be polygons or both be meshes");
+    if (is_mesh_path(pos[0])) return intersect3(pos[0], pos[1], first, &c, t0);
     fl_hal2 a, b;
     int code = load_hal(pos[0], &a);
     if (code) return code;

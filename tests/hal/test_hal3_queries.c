@@ -1,0 +1,207 @@
+/* Hierarchical point-in-polyhedron and intersection (thesis §7.4) agree exactly with brute
+ * force: inclusion against a ray in a different direction (+z) over every triangle, with its
+ * own symbolic perturbation, and on-surface tests by exact predicates; intersection against all
+ * pairs of triangles tested with the exact triangle-triangle test. */
+#include "fl_test.h"
+#include "hal/hal3_internal.h"
+#include "hal3_meshes.h"
+#include "mesh/intersect.h"
+
+static const double *V(const fl_mesh *m, uint32_t v)
+{
+    return m->xyz + 3 * (size_t)v;
+}
+
+static int brute_on(const double *a, const double *b, const double *c, const double *x)
+{
+    if (fl_orient3d(a, b, c, x) != 0) return 0;
+    for (int ax = 0; ax < 3; ax++) {
+        int i = (ax + 1) % 3, j = (ax + 2) % 3;
+        double A[2] = {a[i], a[j]}, B[2] = {b[i], b[j]}, C[2] = {c[i], c[j]}, X[2] = {x[i], x[j]};
+        int s = fl_orient2d(A, B, C);
+        if (s)
+            return fl_orient2d(A, B, X) * s >= 0 && fl_orient2d(B, C, X) * s >= 0 &&
+                   fl_orient2d(C, A, X) * s >= 0;
+    }
+    return 0;
+}
+
+/* orient2d in the xy-plane of (a, b, x + (e, e^2)) */
+static int pert(const double *a, const double *b, const double *x)
+{
+    double A[2] = {a[0], a[1]}, B[2] = {b[0], b[1]}, X[2] = {x[0], x[1]};
+    int o = fl_orient2d(A, B, X);
+    if (o) return o;
+    if (A[1] != B[1]) return A[1] > B[1] ? 1 : -1;
+    return B[0] > A[0] ? 1 : B[0] < A[0] ? -1 : 0;
+}
+
+/* Ray in +z: crossing when the perturbed xy-projection is inside and the plane is above x. */
+static uint8_t brute_inside(const fl_mesh *m, const double *x)
+{
+    int parity = 0;
+    for (size_t t = 0; t < m->triangle_count; t++) {
+        const double *a = V(m, m->tri[3 * t]), *b = V(m, m->tri[3 * t + 1]),
+                     *c = V(m, m->tri[3 * t + 2]);
+        if (brute_on(a, b, c, x)) return FL_HAL3_BOUNDARY;
+        double A[2] = {a[0], a[1]}, B[2] = {b[0], b[1]}, C[2] = {c[0], c[1]};
+        int s = fl_orient2d(A, B, C);
+        if (!s || pert(a, b, x) != s || pert(b, c, x) != s || pert(c, a, x) != s) continue;
+        /* n_z has the sign s; x is below the plane (fl_orient3d > 0 means on the -n side) */
+        parity ^= fl_orient3d(a, b, c, x) * s > 0;
+    }
+    return parity ? FL_HAL3_INSIDE : FL_HAL3_OUTSIDE;
+}
+
+static fl_mesh query_mesh(int i)
+{
+    switch (i) {
+    case 0:
+        return hal3_blob(3, 1.0, 1.0, 1.0, 0.15);
+    case 1:
+        return hal3_cube(3);
+    case 2:
+        return hal3_peanut();
+    default:
+        return hal3_blob(2, 2.0, 1.0, 0.6, 0.0);
+    }
+}
+
+static void test_hal3_inclusion_equals_brute_force_on_random_and_surface_points(void)
+{
+    for (int i = 0; i < 4; i++) {
+        fl_mesh m = query_mesh(i);
+        fl_hal3 hal;
+        fl_error err;
+        CHECK_STATUS(fl_hal3_build(&m, NULL, &hal, &err), FL_OK, &err);
+        if (hal.node_count == 0) {
+            fl_mesh_free(&m);
+            continue;
+        }
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (size_t t = 0; t < 3 * m.triangle_count; t++)
+            for (int k = 0; k < 3; k++) {
+                lo[k] = fmin(lo[k], V(&m, m.tri[t])[k]);
+                hi[k] = fmax(hi[k], V(&m, m.tri[t])[k]);
+            }
+        size_t n = 1500;
+        double *q = malloc(3 * n * sizeof(double));
+        for (size_t k = 0; k < n; k++) {
+            if (k % 5 == 0) { /* a vertex: on the surface */
+                memcpy(q + 3 * k, V(&m, m.tri[(k * 7) % (3 * m.triangle_count)]),
+                       3 * sizeof(double));
+            } else if (k % 5 == 1) { /* a vertex's coordinates mixed: on ray-degenerate lines */
+                const double *a = V(&m, m.tri[(k * 11) % (3 * m.triangle_count)]);
+                const double *b = V(&m, m.tri[(k * 13) % (3 * m.triangle_count)]);
+                q[3 * k] = hal3_rand() * (hi[0] - lo[0]) + lo[0];
+                q[3 * k + 1] = a[1];
+                q[3 * k + 2] = b[2];
+            } else {
+                for (int c = 0; c < 3; c++)
+                    q[3 * k + c] = lo[c] + (hi[c] - lo[c]) * (1.2 * hal3_rand() - 0.1);
+            }
+        }
+        if (i == 1) /* the cube's faces are axis planes: grid points lie on them exactly */
+            for (size_t k = 2; k < n; k += 5)
+                for (int c = 0; c < 3; c++)
+                    q[3 * k + c] = floor(q[3 * k + c] * 2 + 0.5) / 2;
+        uint8_t *w = malloc(n);
+        CHECK_STATUS(fl_hal3_contains(&hal, q, n, w, &err), FL_OK, &err);
+        size_t diff = 0, count[3] = {0, 0, 0};
+        for (size_t k = 0; k < n; k++) {
+            uint8_t b = brute_inside(&m, q + 3 * k);
+            diff += b != w[k];
+            count[b]++;
+        }
+        CHECK_MSG(diff == 0, "mesh %d: %zu of %zu answers differ from brute force", i, diff, n);
+        CHECK(count[0] > 0 && count[1] > 0 && count[2] > 0);
+        free(q);
+        free(w);
+        fl_hal3_free(&hal);
+        fl_mesh_free(&m);
+    }
+}
+
+static int cmp_pair(const void *x, const void *y)
+{
+    const uint32_t *a = x, *b = y;
+    if (a[0] != b[0]) return a[0] < b[0] ? -1 : 1;
+    return a[1] < b[1] ? -1 : a[1] > b[1];
+}
+
+static void check_intersection(const fl_mesh *a, const fl_mesh *b, int expect_some)
+{
+    fl_hal3 ha, hb;
+    fl_error err;
+    CHECK_STATUS(fl_hal3_build(a, NULL, &ha, &err), FL_OK, &err);
+    CHECK_STATUS(fl_hal3_build(b, NULL, &hb, &err), FL_OK, &err);
+    if (!ha.node_count || !hb.node_count) return;
+    size_t cap = 1024, n = 0;
+    uint32_t *bf = malloc(2 * cap * sizeof(uint32_t));
+    for (uint32_t s = 0; s < a->triangle_count; s++)
+        for (uint32_t t = 0; t < b->triangle_count; t++) {
+            const uint32_t *x = a->tri + 3 * (size_t)s, *y = b->tri + 3 * (size_t)t;
+            if (!fl_triangles_intersect(V(a, x[0]), V(a, x[1]), V(a, x[2]), V(b, y[0]), V(b, y[1]),
+                                        V(b, y[2])))
+                continue;
+            if (n == cap) bf = realloc(bf, 2 * (cap *= 2) * sizeof(uint32_t));
+            bf[2 * n] = s, bf[2 * n + 1] = t, n++;
+        }
+    qsort(bf, n, 2 * sizeof(uint32_t), cmp_pair);
+    fl_hal3_pairs p, first;
+    CHECK_STATUS(fl_hal3_intersect(&ha, &hb, 0, &p, &err), FL_OK, &err);
+    CHECK_EQ_INT(p.count, n);
+    CHECK(p.count != n || n == 0 || memcmp(p.pairs, bf, 2 * n * sizeof(uint32_t)) == 0);
+    CHECK(expect_some ? n > 0 : n == 0);
+    CHECK_STATUS(fl_hal3_intersect(&ha, &hb, 1, &first, &err), FL_OK, &err);
+    CHECK_EQ_INT(first.count, n > 0);
+    fl_hal3_pairs_free(&p);
+    fl_hal3_pairs_free(&first);
+    free(bf);
+    fl_hal3_free(&ha);
+    fl_hal3_free(&hb);
+}
+
+static void test_hal3_intersecting_pairs_equal_brute_force(void)
+{
+    fl_mesh a = hal3_blob(2, 1.0, 1.0, 1.0, 0.1);
+    fl_mesh b = hal3_blob(2, 1.5, 0.8, 0.7, 0.05);
+    for (size_t v = 0; v < b.vertex_count; v++)
+        b.xyz[3 * v] += 1.1, b.xyz[3 * v + 1] += 0.3;
+    check_intersection(&a, &b, 1);
+    fl_mesh c = hal3_cube(2), d = hal3_cube(2);
+    for (size_t v = 0; v < d.vertex_count; v++)
+        d.xyz[3 * v] += 2; /* touching along a face */
+    check_intersection(&c, &d, 1);
+    for (size_t v = 0; v < d.vertex_count; v++)
+        d.xyz[3 * v] += 0.5; /* apart */
+    check_intersection(&c, &d, 0);
+    fl_mesh_free(&a);
+    fl_mesh_free(&b);
+    fl_mesh_free(&c);
+    fl_mesh_free(&d);
+}
+
+static void test_hal3_contains_rejects_non_finite_queries(void)
+{
+    fl_mesh m = hal3_icosphere(1);
+    fl_hal3 hal;
+    fl_error err;
+    CHECK_STATUS(fl_hal3_build(&m, NULL, &hal, &err), FL_OK, &err);
+    double q[6] = {0, 0, 0, NAN, 0, 0};
+    uint8_t w[2];
+    CHECK_STATUS(fl_hal3_contains(&hal, q, 2, w, &err), FL_ERR_INPUT, &err);
+    CHECK(w[0] == FL_HAL3_INSIDE);
+    fl_hal3_free(&hal);
+    fl_mesh_free(&m);
+}
+
+int main(void)
+{
+    static const fl_test_case cases[] = {
+        FL_TEST_CASE(test_hal3_inclusion_equals_brute_force_on_random_and_surface_points),
+        FL_TEST_CASE(test_hal3_intersecting_pairs_equal_brute_force),
+        FL_TEST_CASE(test_hal3_contains_rejects_non_finite_queries),
+    };
+    return fl_test_run(cases, sizeof cases / sizeof cases[0]);
+}

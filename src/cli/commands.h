@@ -12,6 +12,7 @@ int cmd_hal(int argc, char **argv);
 int cmd_inside(int argc, char **argv);
 int cmd_intersect(int argc, char **argv);
 int cmd_closest(int argc, char **argv);
+int cmd_skin(int argc, char **argv);
 
 #include "flintstone.h"
 

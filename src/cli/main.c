@@ -19,6 +19,7 @@ static const cli_command commands[] = {
     {"inside", "point inclusion in a polygon through its flintstone tree", cmd_inside},
     {"intersect", "do two polygons' boundaries intersect (flintstone trees)", cmd_intersect},
     {"closest", "closest points on a mesh or polyline (Meshsweeper hierarchy)", cmd_closest},
+    {"skin", "closed triangle mesh of the skin surface of a ball set", cmd_skin},
     {"version", "print the version", cmd_version},
 };
 

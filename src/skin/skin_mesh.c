@@ -376,7 +376,10 @@ static fl_status setup_grid(marcher *m, const double *xyzw, size_t n, double t, 
     }
     m->h = cell > 0 ? cell : 0.25 * sqrt(t) * rmin;
     for (int c = 0; c < 3; c++) {
-        m->origin[c] = lo[c] - m->h;
+        /* an odd fraction of a cell off the box keeps grid points off the special positions of
+         * hand-made inputs (centres on round coordinates), where the skin would pass through
+         * a grid point and several edge vertices would coincide */
+        m->origin[c] = lo[c] - (1 + 0.3183098861837907 * (c + 1) / 3) * m->h;
         if (!((hi[c] - lo[c]) / m->h + 4 < (double)(AXIS_MAX - 2)))
             return fl_fail(err, FL_ERR_INPUT, NULL, -1,
                            "skin: cell %g gives more than 2^20 grid cells along an axis", m->h);

@@ -272,17 +272,31 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
         }
     }
     /* Registration covers the box grown by the reach, so any cell size is correct; cells of a
-     * quarter of the reach keep the candidate lists short, capped at ~2^21 cells. */
+     * quarter of the reach keep the candidate lists short, capped at ~2^21 cells. Long simplices
+     * (across a hollow ball set, e.g. a ring) meet many cells: the cells grow until the
+     * registrations fit in max(2e7, 64 per simplex), trading memory for longer lists. */
     double vol = 1;
     for (int c = 0; c < 3; c++) {
         sk->origin[c] = lo[c] - sk->reach;
         vol *= hi[c] - lo[c] + 2 * sk->reach;
     }
-    sk->cell = fmax(0.25 * sk->reach, cbrt(vol / 2097152.0));
+    double budget = fmax(2e7, 64.0 * (double)sk->simplex_count);
     size_t cells = 1;
-    for (int c = 0; c < 3; c++) {
-        sk->dims[c] = (size_t)((hi[c] - lo[c] + 2 * sk->reach) / sk->cell) + 1;
-        cells *= sk->dims[c];
+    for (double cell = fmax(0.25 * sk->reach, cbrt(vol / 2097152.0));; cell *= 1.5) {
+        sk->cell = cell;
+        cells = 1;
+        for (int c = 0; c < 3; c++) {
+            sk->dims[c] = (size_t)((hi[c] - lo[c] + 2 * sk->reach) / sk->cell) + 1;
+            cells *= sk->dims[c];
+        }
+        double total = 0;
+        for (size_t i = 0; i < sk->simplex_count; i++) {
+            size_t c0[3], c1[3];
+            simplex_cells(sk, &sk->simplex[i], c0, c1);
+            total += (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
+                     (double)(c1[2] - c0[2] + 1);
+        }
+        if (total <= budget || cells == 1) break;
     }
     sk->cell_start = fl_calloc_array(cells + 1, sizeof(size_t));
     if (!sk->cell_start) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");

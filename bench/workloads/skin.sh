@@ -60,7 +60,10 @@ run_case() { # NAME BALLS CELL_ARGS...
 }
 
 factor=${SKIN_COARSE_CELL_FACTOR:-3}
-for spec in ${SKIN_CASES:-"random 50 7" "random 200 11"}; do
+# SKIN_CASES: ';'-separated cases, e.g. "random 50 7;helix 120" (a helix of 120 balls is slow
+# for our mesher: its long simplices make the index's candidate lists long; docs/skin.md)
+IFS=';' read -r -a cases <<<"${SKIN_CASES:-random 50 7;random 200 11}"
+for spec in "${cases[@]}"; do
   set -- $spec
   balls=$out/$1_$2.xyzw
   if [ "$1" = random ]; then gen_random "$2" "$3" >"$balls"; else gen_helix "$2" >"$balls"; fi

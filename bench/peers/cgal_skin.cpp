@@ -39,7 +39,8 @@ int main(int argc, char **argv)
     double t = std::atof(argv[2]);
     Polyhedron p;
     auto t0 = std::chrono::steady_clock::now();
-    CGAL::make_skin_surface_mesh_3(p, balls.begin(), balls.end(), t);
+    // grow_balls = false: the skin of the balls as given (CGAL grows them by 1/t by default)
+    CGAL::make_skin_surface_mesh_3(p, balls.begin(), balls.end(), t, 0, false);
     auto t1 = std::chrono::steady_clock::now();
     std::printf("RESULT seconds=%.6f vertices=%zu faces=%zu\n",
                 std::chrono::duration<double>(t1 - t0).count(), p.size_of_vertices(),

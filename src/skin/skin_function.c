@@ -259,6 +259,105 @@ static void simplex_cells(const fl_skin_function *sk, const skin_simplex *s, siz
     }
 }
 
+static double dot3(const double *u, const double *v)
+{
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+static void cross3(const double *u, const double *v, double *w)
+{
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+}
+
+/* 0 only when c is certainly farther than d from simplex s. Conservative half-space tests: a
+ * point within d of the simplex is within d outside each facet's plane (and within d of the
+ * plane or line of a triangle or edge). Keeps long simplices out of the index cells they only
+ * pass far from. */
+static int may_be_near(const skin_simplex *s, const double c[3], double d)
+{
+    double p[4][3], v[3];
+    for (int i = 0; i <= s->k; i++)
+        for (int j = 0; j < 3; j++) p[i][j] = s->a[j] + (i ? s->e[i - 1][j] : 0);
+    for (int j = 0; j < 3; j++) v[j] = c[j] - s->a[j];
+    if (s->k == 0) return 1;
+    if (s->k == 1) {
+        double len = sqrt(dot3(s->e[0], s->e[0])), along = dot3(v, s->e[0]) / len;
+        if (along < -d || along > len + d) return 0;
+        return dot3(v, v) - along * along <= d * d;
+    }
+    static const int face[4][4] = {{1, 2, 3, 0}, {0, 2, 3, 1}, {0, 1, 3, 2}, {0, 1, 2, 3}};
+    double n[3];
+    if (s->k == 2) {
+        cross3(s->e[0], s->e[1], n);
+        double nl = sqrt(dot3(n, n));
+        if (fabs(dot3(n, v)) > d * nl) return 0;
+        for (int i = 0; i < 3; i++) { /* edge p[i] p[(i+1)%3], outward in the plane */
+            const double *a = p[i], *b = p[(i + 1) % 3], *o = p[(i + 2) % 3];
+            double e[3], m[3], w[3], q[3];
+            for (int j = 0; j < 3; j++) {
+                e[j] = b[j] - a[j];
+                w[j] = o[j] - a[j];
+                q[j] = c[j] - a[j];
+            }
+            cross3(n, e, m);
+            double sgn = dot3(m, w) > 0 ? -1 : 1, ml = sqrt(dot3(m, m));
+            if (sgn * dot3(m, q) > d * ml) return 0;
+        }
+        return 1;
+    }
+    for (int f = 0; f < 4; f++) {
+        const double *a = p[face[f][0]], *b = p[face[f][1]], *cc = p[face[f][2]];
+        const double *o = p[face[f][3]];
+        double e1[3], e2[3], w[3], q[3];
+        for (int j = 0; j < 3; j++) {
+            e1[j] = b[j] - a[j];
+            e2[j] = cc[j] - a[j];
+            w[j] = o[j] - a[j];
+            q[j] = c[j] - a[j];
+        }
+        cross3(e1, e2, n);
+        double sgn = dot3(n, w) > 0 ? -1 : 1, nl = sqrt(dot3(n, n));
+        if (sgn * dot3(n, q) > d * nl) return 0;
+    }
+    return 1;
+}
+
+/* Cell centre of cell (x, y, z). */
+static void cell_centre(const fl_skin_function *sk, size_t x, size_t y, size_t z, double c[3])
+{
+    c[0] = sk->origin[0] + ((double)x + 0.5) * sk->cell;
+    c[1] = sk->origin[1] + ((double)y + 0.5) * sk->cell;
+    c[2] = sk->origin[2] + ((double)z + 0.5) * sk->cell;
+}
+
+/* Registers simplex i in every cell near it (pass 0 counts into cell_start[id + 1], pass 1
+ * fills, pass 2 only counts); returns the number of cells. */
+static double register_simplex(fl_skin_function *sk, size_t i, int pass)
+{
+    size_t c0[3], c1[3];
+    const skin_simplex *s = &sk->simplex[i];
+    simplex_cells(sk, s, c0, c1);
+    /* a cell holds a point within the reach iff its centre is within reach + half diagonal */
+    double d = (sk->reach + 0.8660254037844387 * sk->cell) * (1 + 1e-9);
+    double count = 0;
+    for (size_t z = c0[2]; z <= c1[2]; z++)
+        for (size_t y = c0[1]; y <= c1[1]; y++)
+            for (size_t x = c0[0]; x <= c1[0]; x++) {
+                double c[3];
+                cell_centre(sk, x, y, z, c);
+                if (!may_be_near(s, c, d)) continue;
+                count++;
+                size_t id = (z * sk->dims[1] + y) * sk->dims[0] + x;
+                if (pass == 0)
+                    sk->cell_start[id + 1]++;
+                else if (pass == 1)
+                    sk->cell_item[sk->cell_start[id]++] = (uint32_t)i;
+            }
+    return count;
+}
+
 /* Two passes over the simplices (count, then fill) into CSR arrays. */
 static fl_status build_index(fl_skin_function *sk, fl_error *err)
 {
@@ -290,30 +389,13 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
             cells *= sk->dims[c];
         }
         double total = 0;
-        for (size_t i = 0; i < sk->simplex_count; i++) {
-            size_t c0[3], c1[3];
-            simplex_cells(sk, &sk->simplex[i], c0, c1);
-            total += (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
-                     (double)(c1[2] - c0[2] + 1);
-        }
+        for (size_t i = 0; i < sk->simplex_count; i++) total += register_simplex(sk, i, 2);
         if (total <= budget || cells == 1) break;
     }
     sk->cell_start = fl_calloc_array(cells + 1, sizeof(size_t));
     if (!sk->cell_start) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     for (int pass = 0; pass < 2; pass++) {
-        for (size_t i = 0; i < sk->simplex_count; i++) {
-            size_t c0[3], c1[3];
-            simplex_cells(sk, &sk->simplex[i], c0, c1);
-            for (size_t z = c0[2]; z <= c1[2]; z++)
-                for (size_t y = c0[1]; y <= c1[1]; y++)
-                    for (size_t x = c0[0]; x <= c1[0]; x++) {
-                        size_t id = (z * sk->dims[1] + y) * sk->dims[0] + x;
-                        if (pass == 0)
-                            sk->cell_start[id + 1]++;
-                        else
-                            sk->cell_item[sk->cell_start[id]++] = (uint32_t)i;
-                    }
-        }
+        for (size_t i = 0; i < sk->simplex_count; i++) register_simplex(sk, i, pass);
         if (pass == 0) {
             for (size_t id = 0; id < cells; id++) sk->cell_start[id + 1] += sk->cell_start[id];
             sk->cell_item = fl_alloc_array(sk->cell_start[cells] + 1, sizeof(uint32_t));

@@ -1098,7 +1098,8 @@ void fl_skin_function_free(fl_skin_function *skin);
 /* Options of fl_skin_mesh; all zero is the default. */
 typedef struct fl_skin_options {
     double t;          /* shrink factor in (0, 1); 0 means 0.5 */
-    double cell;       /* grid spacing; 0 means sqrt(t) * (smallest positive radius) / 4 */
+    double cell;       /* grid spacing; 0 means sqrt(t) * (smallest positive radius) / 4,
+                        * smaller (down to 1/4 of that) to straddle thin necks (docs/skin.md) */
     size_t max_cubes;  /* refuse grids with more candidate cubes than this; 0 means 5e7 (about 16 bytes a cube) */
     fl_progress_fn progress; /* may be NULL; stage "skin" */
     void *progress_user;

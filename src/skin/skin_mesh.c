@@ -358,6 +358,24 @@ static fl_status collect_cubes(const marcher *m, const double *xyzw, size_t n, s
     return FL_OK;
 }
 
+/* The default spacing: a quarter of the smallest shrunk radius, smaller where the skin has a
+ * thin neck. Two overlapping balls (an edge of the regular triangulation whose orthogonal
+ * weight w is negative and whose focus lies between them) give a neck of waist radius
+ * sqrt(-t w) in the edge's mixed cell (q orthogonal, p = 0 in the quadric); the grid must
+ * straddle it with about two cells or marching tetrahedra can cut it. Down to 1/4 of the
+ * first value, so one near-tangent pair cannot blow the grid up; thinner necks need --cell. */
+static double default_cell(const fl_skin_function *g, double t, double rmin)
+{
+    double h = 0.25 * sqrt(t) * rmin, floor_h = 0.25 * h;
+    for (size_t i = 0; i < g->simplex_count; i++) {
+        const skin_simplex *s = &g->simplex[i];
+        if (s->k != 1 || !(s->w < 0) || s->mu_f[0] < 0 || s->mu_f[0] > 1) continue;
+        double waist = sqrt(-t * s->w);
+        if (waist < h) h = fmax(waist, floor_h);
+    }
+    return h;
+}
+
 /* Grid spacing and origin: the box of the positive balls with one spare cell around it. */
 static fl_status setup_grid(marcher *m, const double *xyzw, size_t n, double t, double cell,
                             fl_error *err)
@@ -374,7 +392,7 @@ static fl_status setup_grid(marcher *m, const double *xyzw, size_t n, double t, 
             hi[c] = fmax(hi[c], b[c] + r);
         }
     }
-    m->h = cell > 0 ? cell : 0.25 * sqrt(t) * rmin;
+    m->h = cell > 0 ? cell : default_cell(m->g, t, rmin);
     for (int c = 0; c < 3; c++) {
         /* an odd fraction of a cell off the box keeps grid points off the special positions of
          * hand-made inputs (centres on round coordinates), where the skin would pass through
@@ -448,9 +466,9 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
     fl_vec_init(&cubes, sizeof(uint64_t));
     fl_skin_function *g = NULL;
     fl_status st = fl_skin_function_new(xyzw, n, o.t, &g, err);
+    m.g = g;
     if (!st) st = setup_grid(&m, xyzw, n, o.t, o.cell, err);
     if (!st) st = collect_cubes(&m, xyzw, n, o.max_cubes, &cubes, err);
-    m.g = g;
     if (!st) st = march_all(&m, &cubes, &o, err);
     if (!st && m.tri.count == 0)
         st = fl_fail(err, FL_ERR_INPUT, NULL, -1,

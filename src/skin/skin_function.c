@@ -371,7 +371,7 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
         }
     }
     /* Registration covers the box grown by the reach, so any cell size is correct; cells of a
-     * quarter of the reach keep the candidate lists short, capped at ~2^21 cells. Long simplices
+     * half the reach keep the candidate lists short, capped at ~2^18 cells (registering a long simplex visits every cell of its box). Long simplices
      * (across a hollow ball set, e.g. a ring) meet many cells: the cells grow until the
      * registrations fit in max(2e7, 64 per simplex), trading memory for longer lists. */
     double vol = 1;
@@ -381,7 +381,7 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
     }
     double budget = fmax(2e7, 64.0 * (double)sk->simplex_count);
     size_t cells = 1;
-    for (double cell = fmax(0.25 * sk->reach, cbrt(vol / 2097152.0));; cell *= 1.5) {
+    for (double cell = fmax(0.5 * sk->reach, cbrt(vol / 262144.0));; cell *= 1.5) {
         sk->cell = cell;
         cells = 1;
         for (int c = 0; c < 3; c++) {

@@ -51,15 +51,18 @@ static int invert_gram(int k, const double g[3][3], double inv[3][3])
             m[piv][j] = tmp;
         }
         double d = m[c][c];
-        for (int j = 0; j < 2 * k; j++) m[c][j] /= d;
+        for (int j = 0; j < 2 * k; j++)
+            m[c][j] /= d;
         for (int r = 0; r < k; r++) {
             if (r == c) continue;
             double fct = m[r][c];
-            for (int j = 0; j < 2 * k; j++) m[r][j] -= fct * m[c][j];
+            for (int j = 0; j < 2 * k; j++)
+                m[r][j] -= fct * m[c][j];
         }
     }
     for (int i = 0; i < k; i++)
-        for (int j = 0; j < k; j++) inv[i][j] = m[i][k + j];
+        for (int j = 0; j < k; j++)
+            inv[i][j] = m[i][k + j];
     return 0;
 }
 
@@ -69,11 +72,13 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_si
     const double *b0 = xyzw + 4 * (size_t)idx[0];
     memset(s, 0, sizeof *s);
     s->k = k;
-    for (int c = 0; c < 3; c++) s->a[c] = b0[c];
+    for (int c = 0; c < 3; c++)
+        s->a[c] = b0[c];
     double g[3][3], rhs[3];
     for (int j = 0; j < k; j++) {
         const double *bj = xyzw + 4 * (size_t)idx[j + 1];
-        for (int c = 0; c < 3; c++) s->e[j][c] = bj[c] - b0[c];
+        for (int c = 0; c < 3; c++)
+            s->e[j][c] = bj[c] - b0[c];
     }
     for (int i = 0; i < k; i++) {
         for (int j = 0; j < k; j++)
@@ -82,15 +87,19 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_si
         rhs[i] = 0.5 * (g[i][i] - xyzw[4 * (size_t)idx[i + 1] + 3] + b0[3]);
     }
     if (k > 0 && invert_gram(k, g, s->ginv)) return -1;
-    for (int c = 0; c < 3; c++) s->f[c] = s->a[c];
+    for (int c = 0; c < 3; c++)
+        s->f[c] = s->a[c];
     for (int i = 0; i < k; i++) {
         double eta = 0;
-        for (int j = 0; j < k; j++) eta += s->ginv[i][j] * rhs[j];
+        for (int j = 0; j < k; j++)
+            eta += s->ginv[i][j] * rhs[j];
         s->mu_f[i] = eta;
-        for (int c = 0; c < 3; c++) s->f[c] += eta * s->e[i][c];
+        for (int c = 0; c < 3; c++)
+            s->f[c] += eta * s->e[i][c];
     }
     double fa2 = 0;
-    for (int c = 0; c < 3; c++) fa2 += (s->f[c] - s->a[c]) * (s->f[c] - s->a[c]);
+    for (int c = 0; c < 3; c++)
+        fa2 += (s->f[c] - s->a[c]) * (s->f[c] - s->a[c]);
     s->w = fa2 - b0[3]; /* the orthogonal ball: |f - z_0|^2 - w_0 - w = 0 */
     return 0;
 }
@@ -99,13 +108,15 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_si
 static double simplex_value(const skin_simplex *s, double t, const double *x)
 {
     double d[3], proj[3], xi[3] = {0, 0, 0};
-    for (int c = 0; c < 3; c++) d[c] = x[c] - s->a[c];
+    for (int c = 0; c < 3; c++)
+        d[c] = x[c] - s->a[c];
     double et[3];
     for (int i = 0; i < s->k; i++)
         et[i] = s->e[i][0] * d[0] + s->e[i][1] * d[1] + s->e[i][2] * d[2];
     double sum = 0;
     for (int i = 0; i < s->k; i++) {
-        for (int j = 0; j < s->k; j++) xi[i] += s->ginv[i][j] * et[j];
+        for (int j = 0; j < s->k; j++)
+            xi[i] += s->ginv[i][j] * et[j];
         double mu = s->mu_f[i] + (xi[i] - s->mu_f[i]) / (1 - t);
         if (mu < -SKIN_BARY_SLACK) return HUGE_VAL;
         sum += mu;
@@ -113,7 +124,8 @@ static double simplex_value(const skin_simplex *s, double t, const double *x)
     if (1 - sum < -SKIN_BARY_SLACK) return HUGE_VAL;
     for (int c = 0; c < 3; c++) {
         proj[c] = s->a[c];
-        for (int i = 0; i < s->k; i++) proj[c] += xi[i] * s->e[i][c];
+        for (int i = 0; i < s->k; i++)
+            proj[c] += xi[i] * s->e[i][c];
     }
     double q2 = 0, p2 = 0;
     for (int c = 0; c < 3; c++) {
@@ -214,7 +226,8 @@ static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, fl_error 
             for (int i = 0; i < 4; i++)
                 if (mask >> i & 1) u[k++] = rt.tet[4 * t + i];
             sort_small(u, k);
-            for (int i = k; i < 4; i++) u[i] = UINT32_MAX;
+            for (int i = k; i < 4; i++)
+                u[i] = UINT32_MAX;
         }
     }
     fl_rt3_free(&rt);
@@ -222,7 +235,8 @@ static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, fl_error 
     for (size_t i = 0; i < m; i++) {
         if (i > 0 && !cmp_tuple(tup + 4 * i, tup + 4 * (i - 1))) continue;
         int k = 0;
-        while (k < 4 && tup[4 * i + k] != UINT32_MAX) k++;
+        while (k < 4 && tup[4 * i + k] != UINT32_MAX)
+            k++;
         if (add_simplex(v, xyzw, tup + 4 * i, k - 1)) {
             free(tup);
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
@@ -236,7 +250,8 @@ static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, fl_error 
 
 static void simplex_box(const skin_simplex *s, double lo[3], double hi[3])
 {
-    for (int c = 0; c < 3; c++) lo[c] = hi[c] = s->a[c];
+    for (int c = 0; c < 3; c++)
+        lo[c] = hi[c] = s->a[c];
     for (int j = 0; j < s->k; j++)
         for (int c = 0; c < 3; c++) {
             double u = s->a[c] + s->e[j][c];
@@ -279,8 +294,10 @@ static int may_be_near(const skin_simplex *s, const double c[3], double d)
 {
     double p[4][3], v[3];
     for (int i = 0; i <= s->k; i++)
-        for (int j = 0; j < 3; j++) p[i][j] = s->a[j] + (i ? s->e[i - 1][j] : 0);
-    for (int j = 0; j < 3; j++) v[j] = c[j] - s->a[j];
+        for (int j = 0; j < 3; j++)
+            p[i][j] = s->a[j] + (i ? s->e[i - 1][j] : 0);
+    for (int j = 0; j < 3; j++)
+        v[j] = c[j] - s->a[j];
     if (s->k == 0) return 1;
     if (s->k == 1) {
         double len = sqrt(dot3(s->e[0], s->e[0])), along = dot3(v, s->e[0]) / len;
@@ -371,9 +388,10 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
         }
     }
     /* Registration covers the box grown by the reach, so any cell size is correct; cells of a
-     * half the reach keep the candidate lists short, capped at ~2^18 cells (registering a long simplex visits every cell of its box). Long simplices
-     * (across a hollow ball set, e.g. a ring) meet many cells: the cells grow until the
-     * registrations fit in max(2e7, 64 per simplex), trading memory for longer lists. */
+     * half the reach keep the candidate lists short, capped at ~2^18 cells (registering a long
+     * simplex visits every cell of its box). Long simplices (across a hollow ball set, e.g. a ring)
+     * meet many cells: the cells grow until the registrations fit in max(2e7, 64 per simplex),
+     * trading memory for longer lists. */
     double vol = 1;
     for (int c = 0; c < 3; c++) {
         sk->origin[c] = lo[c] - sk->reach;
@@ -389,15 +407,18 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
             cells *= sk->dims[c];
         }
         double total = 0;
-        for (size_t i = 0; i < sk->simplex_count; i++) total += register_simplex(sk, i, 2);
+        for (size_t i = 0; i < sk->simplex_count; i++)
+            total += register_simplex(sk, i, 2);
         if (total <= budget || cells == 1) break;
     }
     sk->cell_start = fl_calloc_array(cells + 1, sizeof(size_t));
     if (!sk->cell_start) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     for (int pass = 0; pass < 2; pass++) {
-        for (size_t i = 0; i < sk->simplex_count; i++) register_simplex(sk, i, pass);
+        for (size_t i = 0; i < sk->simplex_count; i++)
+            register_simplex(sk, i, pass);
         if (pass == 0) {
-            for (size_t id = 0; id < cells; id++) sk->cell_start[id + 1] += sk->cell_start[id];
+            for (size_t id = 0; id < cells; id++)
+                sk->cell_start[id + 1] += sk->cell_start[id];
             sk->cell_item = fl_alloc_array(sk->cell_start[cells] + 1, sizeof(uint32_t));
             if (!sk->cell_item) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
         } else {
@@ -422,7 +443,8 @@ fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_f
         if (!isfinite(xyzw[i]) || fabs(xyzw[i]) > 1e100)
             return fl_fail(err, FL_ERR_INPUT, NULL, -1,
                            "skin: ball %zu has a non-finite or huge coordinate", i / 4);
-    for (size_t i = 0; i < n; i++) wmax = fmax(wmax, xyzw[4 * i + 3]);
+    for (size_t i = 0; i < n; i++)
+        wmax = fmax(wmax, xyzw[4 * i + 3]);
     if (!(wmax > 0))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: no ball has a positive radius");
     fl_skin_function *sk = calloc(1, sizeof *sk);

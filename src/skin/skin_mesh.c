@@ -41,7 +41,8 @@ static uint64_t mix64(uint64_t x)
 static int map_init(u64map *m, size_t cap)
 {
     m->cap = 16;
-    while (m->cap < 2 * cap) m->cap *= 2;
+    while (m->cap < 2 * cap)
+        m->cap *= 2;
     m->count = 0;
     m->key = fl_alloc_array(m->cap, sizeof(uint64_t));
     m->val = fl_alloc_array(m->cap, sizeof(uint32_t));
@@ -61,7 +62,8 @@ static void map_free(u64map *m)
 static size_t map_slot(const u64map *m, uint64_t key)
 {
     size_t i = (size_t)mix64(key) & (m->cap - 1);
-    while (m->key[i] != UINT64_MAX && m->key[i] != key) i = (i + 1) & (m->cap - 1);
+    while (m->key[i] != UINT64_MAX && m->key[i] != key)
+        i = (i + 1) & (m->cap - 1);
     return i;
 }
 
@@ -116,7 +118,8 @@ static uint64_t pack(const uint64_t p[3])
 
 static void grid_point(const marcher *m, const uint64_t p[3], double x[3])
 {
-    for (int c = 0; c < 3; c++) x[c] = m->origin[c] + m->h * (double)p[c];
+    for (int c = 0; c < 3; c++)
+        x[c] = m->origin[c] + m->h * (double)p[c];
 }
 
 static double eval(marcher *m, const double x[3])
@@ -159,7 +162,8 @@ static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p
         double width = hi - lo;
         double s_new = lo + (hi - lo) * (-glo / (ghi - glo));
         if (!(s_new > lo && s_new < hi)) s_new = 0.5 * (lo + hi);
-        for (int c = 0; c < 3; c++) x[c] = a[c] + s_new * (b[c] - a[c]);
+        for (int c = 0; c < 3; c++)
+            x[c] = a[c] + s_new * (b[c] - a[c]);
         double gx = eval(m, x);
         if (gx < 0) {
             lo = s_new;
@@ -175,7 +179,8 @@ static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p
         if (hi - lo > 0.5 * width) { /* slow step: bisect once */
             double mid = 0.5 * (lo + hi);
             if (mid <= lo || mid >= hi) break;
-            for (int c = 0; c < 3; c++) x[c] = a[c] + mid * (b[c] - a[c]);
+            for (int c = 0; c < 3; c++)
+                x[c] = a[c] + mid * (b[c] - a[c]);
             double gm = eval(m, x);
             if (gm < 0) {
                 lo = mid;
@@ -203,8 +208,8 @@ static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p
 /* Emits triangle (a, b, c) on edges whose doubled midpoints are ma, mb, mc (exact small
  * integers), oriented so its normal points along `outward` (outside minus inside corners):
  * exact, since the midpoint triangle of a grid tetrahedron is never flat. */
-static int emit(marcher *m, uint32_t a, uint32_t b, uint32_t c, const double *ma,
-                const double *mb, const double *mc, const double *outward)
+static int emit(marcher *m, uint32_t a, uint32_t b, uint32_t c, const double *ma, const double *mb,
+                const double *mc, const double *outward)
 {
     double u[3], v[3];
     for (int k = 0; k < 3; k++) {
@@ -254,14 +259,17 @@ static int march_tet(marcher *m, const tet_corner *c)
     if (ni == 0 || no == 0) return 0;
     double outward[3] = {0, 0, 0};
     for (int k = 0; k < 3; k++) {
-        for (int i = 0; i < no; i++) outward[k] += c[outs[i]].local[k] * ni;
-        for (int i = 0; i < ni; i++) outward[k] -= c[ins[i]].local[k] * no;
+        for (int i = 0; i < no; i++)
+            outward[k] += c[outs[i]].local[k] * ni;
+        for (int i = 0; i < ni; i++)
+            outward[k] -= c[ins[i]].local[k] * no;
     }
     double mp[4][3];
     uint32_t v[4];
     if (ni == 1 || no == 1) {
         const int *lone = ni == 1 ? ins : outs, *rest = ni == 1 ? outs : ins;
-        for (int i = 0; i < 3; i++) v[i] = corner_edge(m, &c[lone[0]], &c[rest[i]], mp[i]);
+        for (int i = 0; i < 3; i++)
+            v[i] = corner_edge(m, &c[lone[0]], &c[rest[i]], mp[i]);
         if (v[0] == UINT32_MAX || v[1] == UINT32_MAX || v[2] == UINT32_MAX) return -1;
         return emit(m, v[0], v[1], v[2], mp[0], mp[1], mp[2], outward);
     }
@@ -280,7 +288,8 @@ static int march_tet(marcher *m, const tet_corner *c)
  * the order of a permutation, to corner 111. */
 static int march_cube(marcher *m, const uint64_t p[3])
 {
-    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                   {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     int lab[8], any_in = 0, any_out = 0;
     for (int b = 0; b < 8; b++) {
         uint64_t q[3] = {p[0] + (b & 1), p[1] + (b >> 1 & 1), p[2] + (b >> 2 & 1)};
@@ -426,8 +435,7 @@ static double vertex_offset(marcher *m)
     return worst;
 }
 
-static fl_status march_all(marcher *m, const fl_vec *cubes, const fl_skin_options *o,
-                           fl_error *err)
+static fl_status march_all(marcher *m, const fl_vec *cubes, const fl_skin_options *o, fl_error *err)
 {
     const uint64_t *k = cubes->data;
     size_t est = cubes->count / 4 + 64;

@@ -48,13 +48,15 @@ static int oracle_solve(int m, ld *a, ld *b, ld *x)
         b[p] = tmp;
         for (int r = c + 1; r < m; r++) {
             ld f = a[r * m + c] / a[c * m + c];
-            for (int j = c; j < m; j++) a[r * m + j] -= f * a[c * m + j];
+            for (int j = c; j < m; j++)
+                a[r * m + j] -= f * a[c * m + j];
             b[r] -= f * b[c];
         }
     }
     for (int r = m - 1; r >= 0; r--) {
         ld s = b[r];
-        for (int j = r + 1; j < m; j++) s -= a[r * m + j] * x[j];
+        for (int j = r + 1; j < m; j++)
+            s -= a[r * m + j] * x[j];
         x[r] = s / a[r * m + r];
     }
     return 0;
@@ -76,7 +78,8 @@ static ld oracle_subset(const double *xyzw, const int *idx, int m, double t, con
         for (int j = 0; j < m; j++) {
             const double *zj = xyzw + 4 * idx[j];
             ld d = 0;
-            for (int k = 0; k < 3; k++) d += (ld)zi[k] * zj[k];
+            for (int k = 0; k < 3; k++)
+                d += (ld)zi[k] * zj[k];
             a[i * n + j] = 2 * (1 - (ld)t) * d;
         }
         a[i * n + m] = 1;
@@ -90,7 +93,8 @@ static ld oracle_subset(const double *xyzw, const int *idx, int m, double t, con
     for (int i = 0; i < m; i++) {
         if (sol[i] < -1e-12L) return HUGE_VALL;
         const double *zi = xyzw + 4 * idx[i];
-        for (int k = 0; k < 3; k++) z[k] += sol[i] * zi[k];
+        for (int k = 0; k < 3; k++)
+            z[k] += sol[i] * zi[k];
         lc += sol[i] * ((ld)zi[0] * zi[0] + (ld)zi[1] * zi[1] + (ld)zi[2] * zi[2] - zi[3]);
     }
     ld d2 = 0, z2 = 0;
@@ -165,16 +169,19 @@ static int oracle_focus(const double *xyzw, const uint32_t *v, int k, ld f[3], l
     ld a[9], b[3], eta[3] = {0, 0, 0}, e[3][3];
     const double *z0 = xyzw + 4 * v[0];
     for (int i = 0; i < k; i++)
-        for (int c = 0; c < 3; c++) e[i][c] = (ld)xyzw[4 * v[i + 1] + c] - z0[c];
+        for (int c = 0; c < 3; c++)
+            e[i][c] = (ld)xyzw[4 * v[i + 1] + c] - z0[c];
     for (int i = 0; i < k; i++) {
-        for (int j = 0; j < k; j++) a[i * k + j] = 2 * (e[i][0] * e[j][0] + e[i][1] * e[j][1] + e[i][2] * e[j][2]);
+        for (int j = 0; j < k; j++)
+            a[i * k + j] = 2 * (e[i][0] * e[j][0] + e[i][1] * e[j][1] + e[i][2] * e[j][2]);
         b[i] = a[i * k + i] / 2 - xyzw[4 * v[i + 1] + 3] + z0[3];
     }
     if (k > 0 && oracle_solve(k, a, b, eta)) return -1;
     ld d2 = 0;
     for (int c = 0; c < 3; c++) {
         f[c] = z0[c];
-        for (int j = 0; j < k; j++) f[c] += eta[j] * e[j][c];
+        for (int j = 0; j < k; j++)
+            f[c] += eta[j] * e[j][c];
         d2 += (f[c] - z0[c]) * (f[c] - z0[c]);
     }
     *w = d2 - z0[3];
@@ -204,7 +211,8 @@ static long long euler_union_oracle(const double *xyzw, size_t n, int *ok)
                     x->v[j - 1] = tmp;
                 }
             x->k = k - 1;
-            for (int i = k; i < 4; i++) x->v[i] = UINT32_MAX;
+            for (int i = k; i < 4; i++)
+                x->v[i] = UINT32_MAX;
         }
     fl_rt3_free(&rt);
     qsort(s, m, sizeof *s, oracle_cmp);
@@ -221,10 +229,12 @@ static long long euler_union_oracle(const double *xyzw, size_t n, int *ok)
             int inside_cell = 1;
             for (size_t j = 0; j < n && inside_cell; j++) {
                 int member = 0;
-                for (int a = 0; a <= k; a++) member |= s[i].v[a] == j;
+                for (int a = 0; a <= k; a++)
+                    member |= s[i].v[a] == j;
                 if (member) continue;
                 ld p = -xyzw[4 * j + 3];
-                for (int c = 0; c < 3; c++) p += (f[c] - xyzw[4 * j + c]) * (f[c] - xyzw[4 * j + c]);
+                for (int c = 0; c < 3; c++)
+                    p += (f[c] - xyzw[4 * j + c]) * (f[c] - xyzw[4 * j + c]);
                 if (p < w) inside_cell = 0;
             }
             ld alpha = w;
@@ -235,7 +245,8 @@ static long long euler_union_oracle(const double *xyzw, size_t n, int *ok)
                     int contains = 1;
                     for (int a = 0; a <= k && contains; a++) {
                         int hit = 0;
-                        for (int b = 0; b <= k + 1; b++) hit |= s[j].v[b] == s[i].v[a];
+                        for (int b = 0; b <= k + 1; b++)
+                            hit |= s[j].v[b] == s[i].v[a];
                         contains = hit;
                     }
                     if (contains && s[j].alpha < alpha) alpha = s[j].alpha;

@@ -123,7 +123,8 @@ static void test_skin_function_matches_definition(void)
     enum { N = 14 };
     double b[4 * N];
     for (int i = 0; i < N; i++) {
-        for (int c = 0; c < 3; c++) b[4 * i + c] = 4 * rnd();
+        for (int c = 0; c < 3; c++)
+            b[4 * i + c] = 4 * rnd();
         b[4 * i + 3] = pow(0.5 + rnd(), 2);
     }
     b[4 * 5 + 3] = -0.3; /* a ball of negative weight still takes part in combinations */
@@ -155,7 +156,8 @@ static void test_random_balls_euler_matches_union(void)
         enum { N = 12 };
         double b[4 * N];
         for (int i = 0; i < N; i++) {
-            for (int c = 0; c < 3; c++) b[4 * i + c] = 4 * rnd();
+            for (int c = 0; c < 3; c++)
+                b[4 * i + c] = 4 * rnd();
             b[4 * i + 3] = pow(0.7 + 0.6 * rnd(), 2);
         }
         int ok = 0;

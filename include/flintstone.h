@@ -1637,6 +1637,72 @@ fl_status fl_hal3_intersect(const fl_hal3 *a, const fl_hal3 *b, int first_only,
 
 /* end of hal3 */
 
+/* ==== skin ================================================================================ */
+/* (section owned by src/skin; docs/skin.md)
+ *
+ * Skin surfaces of ball sets (Edelsbrunner; Cheng & Tan, "Approximating polyhedral objects with
+ * deformable smooth surfaces", §6.1). For a ball b = (z, w) (w = squared radius) let
+ * b^t = (z, t w); convex combinations of balls are taken in the lifted space
+ * (z, |z|^2 - w) (§2.1). The skin body is body^t(B) = union of b^t over b in conv(B) and the
+ * skin surface skin^t(B) is its boundary; for 0 < t < 1 it is smooth and body^t(B) is
+ * homeomorphic to the union of the balls (Theorem 15). A single ball of radius r gives the
+ * sphere of radius sqrt(t) r. */
+
+/* The skin function G of a ball set: G(x) < 0 exactly inside body^t(B), G(x) = 0 on the skin.
+ * G(x) = min over b in conv(B) of the power distance of x to b^t; in each mixed cell of the
+ * regular triangulation it is a quadric (docs/skin.md derives it). Immutable once built. */
+typedef struct fl_skin_function fl_skin_function;
+
+/* Builds G for the n balls xyzw[4n] and shrink factor t in (0, 1). At least one ball needs a
+ * positive weight. Up to 8 balls need no triangulation (every subset of at most 4 balls is a
+ * candidate simplex); more need 4 centres not in a plane (the regular triangulation, fl_rt3).
+ * FL_ERR_USAGE for NULL pointers or t outside (0, 1); FL_ERR_INPUT for NaN/Inf, no positive
+ * weight, coplanar centres (n > 8); FL_ERR_NOMEM. Free with fl_skin_function_free. */
+fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_function **out,
+                               fl_error *err);
+
+/* G(x) for x[3]. The sign is always right. The value is exact up to rounding wherever
+ * G(x) <= 0, and wherever the minimising ball of conv(B) has its centre within
+ * sqrt(t * max weight) of x; elsewhere a larger positive number (HUGE_VAL when no ball is that
+ * near). */
+double fl_skin_function_value(const fl_skin_function *skin, const double x[3]);
+
+/* Releases a skin function; NULL is a no-op. */
+void fl_skin_function_free(fl_skin_function *skin);
+
+/* Options of fl_skin_mesh; all zero is the default. */
+typedef struct fl_skin_options {
+    double t;          /* shrink factor in (0, 1); 0 means 0.5 */
+    double cell;       /* grid spacing; 0 means sqrt(t) * (smallest positive radius) / 4,
+                        * smaller (down to 1/4 of that) to straddle thin necks (docs/skin.md) */
+    size_t max_cubes;  /* refuse grids with more candidate cubes than this; 0 means 5e7 (about 16 bytes a cube) */
+    fl_progress_fn progress; /* may be NULL; stage "skin" */
+    void *progress_user;
+} fl_skin_options;
+
+/* What fl_skin_mesh measured (optional). */
+typedef struct fl_skin_stats {
+    double cell;              /* grid spacing used */
+    size_t cubes;             /* grid cubes inside the balls' bounding boxes that were visited */
+    size_t evaluations;       /* evaluations of G (grid points and bisection steps) */
+    double max_vertex_offset; /* largest |G(v)| / |grad G(v)| over the vertices: a first-order
+                                 estimate of their distance to the skin */
+} fl_skin_stats;
+
+/* Triangulates skin^t(B) of the n balls xyzw[4n]: marching tetrahedra on the Kuhn
+ * subdivision of a cubic grid restricted to the balls' bounding boxes, with every vertex placed
+ * on the skin by bisection of G along its grid edge to the last bit. The result is a closed,
+ * oriented (outward, counter-clockwise) 2-manifold triangle mesh for every input; it has the
+ * topology of the skin when the grid resolves its features (necks thinner than the cell can
+ * be missed; docs/skin.md). stats may be NULL. Errors as fl_skin_function_new, plus
+ * FL_ERR_INPUT when the grid would exceed max_cubes cubes or 2^20 cells along an axis,
+ * FL_ERR_ALGORITHM "cancelled". On failure *out is zeroed. Free with fl_mesh_free. */
+fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
+                       fl_skin_stats *stats, fl_error *err);
+
+/* end of skin */
+
+
 #ifdef __cplusplus
 }
 #endif

@@ -16,6 +16,7 @@ int cmd_closest(int argc, char **argv);
 int cmd_hausdorff(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_smooth(int argc, char **argv);
+int cmd_skin(int argc, char **argv);
 
 #include "flintstone.h"
 

@@ -27,6 +27,7 @@ static const cli_command commands[] = {
      cmd_render},
     {"smooth", "G1 cubic Bézier curve or surface through a polygon's or mesh's vertices",
      cmd_smooth},
+    {"skin", "closed triangle mesh of the skin surface of a ball set", cmd_skin},
     {"version", "print the version", cmd_version},
 };
 

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# `flintstone skin --balls` against CGAL's Skin_surface_3 mesher (bench/peers/cgal_skin.cpp,
+# CGAL::make_skin_surface_mesh_3) on the same ball set and shrink factor t = 0.5, in the same
+# run, alternately BENCH_ROUNDS times each. Seconds: ours is the `seconds` of --json (reading the
+# balls + meshing), CGAL's the mesher call alone. Ball sets (generated, fixed seeds): random
+# balls in a cube ("random N") and a chain of balls along a helix ("helix N"). Our mesh is run
+# at the default cell and at a coarser cell (SKIN_COARSE_CELL_FACTOR, default 3x) closer to
+# CGAL's mesh size. Notes give both mesh sizes and the largest distance from the vertices of
+# each mesh to the other mesh (`flintstone closest`, exact point-to-mesh distances; a sampled
+# lower bound of the Hausdorff distance between the two meshes).
+set -euo pipefail
+source "$(dirname "$0")/../lib.sh"
+root=$(cd "$(dirname "$0")/../.." && pwd)
+build=${FL_BENCH_BUILD:-$root/build-bench}
+out=$BENCH_DATA/skin
+mkdir -p "$out" "$BENCH_BIN"
+cmake --build "$build" -j 2 --target flintstone >/dev/null
+fl=$build/flintstone
+peer=$BENCH_BIN/cgal_skin
+[ -x "$peer" ] || g++ -O2 -DNDEBUG -o "$peer" "$root/bench/peers/cgal_skin.cpp" -lgmp -lmpfr
+
+gen_random() { # N SEED: N balls, centres in [0, 2 N^(1/3)]^3, radii in [0.6, 1.2]
+  awk -v n="$1" -v seed="$2" 'BEGIN { srand(seed); s = 2 * n ^ (1 / 3);
+    for (i = 0; i < n; i++) { r = 0.6 + 0.6 * rand();
+      printf "%.9f %.9f %.9f %.9f\n", s * rand(), s * rand(), s * rand(), r * r } }'
+}
+gen_helix() { # N: N balls of radius 0.5 every 0.6 along a helix of radius 3 and pitch 2
+  awk -v n="$1" 'BEGIN { for (i = 0; i < n; i++) { a = i * 0.6 / 3;
+    printf "%.9f %.9f %.9f %.9f\n", 3 * cos(a), 3 * sin(a), a / 3.14159265 * 2 / 2, 0.25 } }'
+}
+off_vertices() { awk 'NR == 1 && $1 == "OFF" { next } !n && NF >= 2 { n = $1; next }
+  n && k < n && NF >= 3 { print $1, $2, $3; k++ }' "$1"; }
+max_dist() { # MESH POINTS.xyz
+  "$fl" closest "$1" "$2" --json | sed -n 's/.*"max_distance":\([^,}]*\).*/\1/p'
+}
+
+run_case() { # NAME BALLS CELL_ARGS...
+  local name=$1 balls=$2
+  shift 2
+  local o_times="" p_times="" o_json p_line
+  for ((r = 0; r < BENCH_ROUNDS; r++)); do
+    o_json=$("$fl" skin --balls "$balls" --t 0.5 "$@" -o "$out/ours.off" --json) ||
+      { echo "ERROR|skin $name|ours failed"; return 0; }
+    p_line=$("$peer" "$balls" 0.5 "$out/cgal.off" | grep '^RESULT') ||
+      { echo "ERROR|skin $name|cgal failed"; return 0; }
+    o_times+="$(sed -n 's/.*"seconds":\([^,}]*\).*/\1/p' <<<"$o_json")"$'\n'
+    p_times+="$(field seconds "$p_line")"$'\n'
+  done
+  off_vertices "$out/ours.off" >"$out/ours.xyz"
+  off_vertices "$out/cgal.off" >"$out/cgal.xyz"
+  local d1 d2 ov of euler
+  d1=$(max_dist "$out/cgal.off" "$out/ours.xyz")
+  d2=$(max_dist "$out/ours.off" "$out/cgal.xyz")
+  ov=$(sed -n 's/.*"vertices":\([0-9]*\).*/\1/p' <<<"$o_json")
+  of=$(sed -n 's/.*"faces":\([0-9]*\).*/\1/p' <<<"$o_json")
+  euler=$(sed -n 's/.*"euler":\(-*[0-9]*\).*/\1/p' <<<"$o_json")
+  printf 'ROW|skin %s|%s|CGAL make_skin_surface_mesh_3|%s|-|ours V=%s F=%s Euler %s, CGAL V=%s F=%s; max vertex-to-other-mesh distance ours->CGAL %.3g, CGAL->ours %.3g\n' \
+    "$name" "$(median <<<"${o_times%$'\n'}")" "$(median <<<"${p_times%$'\n'}")" "$ov" "$of" \
+    "$euler" "$(field vertices "$p_line")" "$(field faces "$p_line")" "$d1" "$d2"
+}
+
+factor=${SKIN_COARSE_CELL_FACTOR:-3}
+# SKIN_CASES: ';'-separated cases, e.g. "random 50 7;helix 120" (a helix of 120 balls is slow
+# for our mesher: its long simplices make the index's candidate lists long; docs/skin.md)
+IFS=';' read -r -a cases <<<"${SKIN_CASES:-random 50 7;random 200 11}"
+for spec in "${cases[@]}"; do
+  set -- $spec
+  balls=$out/$1_$2.xyzw
+  if [ "$1" = random ]; then gen_random "$2" "$3" >"$balls"; else gen_helix "$2" >"$balls"; fi
+  run_case "$1 $2 (default cell)" "$balls"
+  # default cell = sqrt(t) r_min / 4; the coarse one is factor times that
+  rmin=$(awk 'NR == 1 || $4 < m { m = $4 } END { printf "%.9g", sqrt(m) }' "$balls")
+  run_case "$1 $2 (cell x$factor)" "$balls" --cell "$(awk -v r="$rmin" -v f="$factor" \
+    'BEGIN { printf "%.9g", f * sqrt(0.5) * r / 4 }')"
+done

@@ -1,0 +1,472 @@
+/* The skin function G of a ball set (Cheng & Tan §6.1; Edelsbrunner's skin).
+ *
+ * G(x) = min over b in conv(B) of pi_{b^t}(x), the power distance of x to the shrunk ball.
+ * Writing the combination's centre z and its lifted height L(z) (the lower hull of the lifted
+ * balls, i.e. the regular triangulation), the function minimised is convex in z for t < 1 and
+ * its minimiser lies in the relative interior of one simplex X of the regular triangulation.
+ * There, with focus f and orthogonal weight w of X, and x - f = p + q split into the parts
+ * parallel and orthogonal to aff(X):
+ *
+ *     G(x) = |q|^2 - t/(1-t) |p|^2 + t w,   minimiser z* = f + p / (1-t) in X,
+ *
+ * which is the quadric of the mixed cell (1-t) X + t nu_X (docs/skin.md derives it). Every
+ * simplex whose z* lies in it gives the power distance of an actual member of conv(B), hence a
+ * value >= G(x); the minimising simplex gives G(x). So the minimum over candidate simplices is
+ * G(x) as soon as the candidates contain the minimising one, and extra candidates are harmless.
+ * If G(x) < 0, the minimiser's centre z* has |x - z*|^2 < t w(z*) <= t wmax, which bounds
+ * where the candidates must be searched. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/core.h"
+#include "skin/skin_internal.h"
+
+/* Barycentric slack when deciding whether z* lies in a simplex: a z* just outside a simplex
+ * lies in (or next to) a face that is itself a candidate, so the slack only avoids rejecting
+ * both at a shared boundary; the value it admits differs from G by O(slack * w). */
+#define SKIN_BARY_SLACK 1e-12
+
+/* Inverts the k x k symmetric Gram matrix g (Gauss-Jordan with partial pivoting). Returns -1
+ * when it is singular relative to its diagonal (affinely dependent centres). */
+static int invert_gram(int k, const double g[3][3], double inv[3][3])
+{
+    double m[3][6];
+    double scale = 0;
+    for (int i = 0; i < k; i++) {
+        for (int j = 0; j < k; j++) {
+            m[i][j] = g[i][j];
+            m[i][k + j] = i == j;
+        }
+        if (g[i][i] > scale) scale = g[i][i];
+    }
+    for (int c = 0; c < k; c++) {
+        int piv = c;
+        for (int r = c + 1; r < k; r++)
+            if (fabs(m[r][c]) > fabs(m[piv][c])) piv = r;
+        if (!(fabs(m[piv][c]) > 1e-12 * scale)) return -1;
+        for (int j = 0; j < 2 * k; j++) {
+            double tmp = m[c][j];
+            m[c][j] = m[piv][j];
+            m[piv][j] = tmp;
+        }
+        double d = m[c][c];
+        for (int j = 0; j < 2 * k; j++)
+            m[c][j] /= d;
+        for (int r = 0; r < k; r++) {
+            if (r == c) continue;
+            double fct = m[r][c];
+            for (int j = 0; j < 2 * k; j++)
+                m[r][j] -= fct * m[c][j];
+        }
+    }
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j < k; j++)
+            inv[i][j] = m[i][k + j];
+    return 0;
+}
+
+/* Fills s for the balls idx[0..k] (k+1 balls). Returns -1 for affinely dependent centres. */
+static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simplex *s)
+{
+    const double *b0 = xyzw + 4 * (size_t)idx[0];
+    memset(s, 0, sizeof *s);
+    s->k = k;
+    for (int c = 0; c < 3; c++)
+        s->a[c] = b0[c];
+    double g[3][3], rhs[3];
+    for (int j = 0; j < k; j++) {
+        const double *bj = xyzw + 4 * (size_t)idx[j + 1];
+        for (int c = 0; c < 3; c++)
+            s->e[j][c] = bj[c] - b0[c];
+    }
+    for (int i = 0; i < k; i++) {
+        for (int j = 0; j < k; j++)
+            g[i][j] = s->e[i][0] * s->e[j][0] + s->e[i][1] * s->e[j][1] + s->e[i][2] * s->e[j][2];
+        /* equal power to ball 0 and ball i at f = a + E eta: G eta = (|e_i|^2 - w_i + w_0)/2 */
+        rhs[i] = 0.5 * (g[i][i] - xyzw[4 * (size_t)idx[i + 1] + 3] + b0[3]);
+    }
+    if (k > 0 && invert_gram(k, g, s->ginv)) return -1;
+    for (int c = 0; c < 3; c++)
+        s->f[c] = s->a[c];
+    for (int i = 0; i < k; i++) {
+        double eta = 0;
+        for (int j = 0; j < k; j++)
+            eta += s->ginv[i][j] * rhs[j];
+        s->mu_f[i] = eta;
+        for (int c = 0; c < 3; c++)
+            s->f[c] += eta * s->e[i][c];
+    }
+    double fa2 = 0;
+    for (int c = 0; c < 3; c++)
+        fa2 += (s->f[c] - s->a[c]) * (s->f[c] - s->a[c]);
+    s->w = fa2 - b0[3]; /* the orthogonal ball: |f - z_0|^2 - w_0 - w = 0 */
+    return 0;
+}
+
+/* The mixed-cell quadric of s at x, or HUGE_VAL when the minimiser z* is not in s. */
+static double simplex_value(const skin_simplex *s, double t, const double *x)
+{
+    double d[3], proj[3], xi[3] = {0, 0, 0};
+    for (int c = 0; c < 3; c++)
+        d[c] = x[c] - s->a[c];
+    double et[3];
+    for (int i = 0; i < s->k; i++)
+        et[i] = s->e[i][0] * d[0] + s->e[i][1] * d[1] + s->e[i][2] * d[2];
+    double sum = 0;
+    for (int i = 0; i < s->k; i++) {
+        for (int j = 0; j < s->k; j++)
+            xi[i] += s->ginv[i][j] * et[j];
+        double mu = s->mu_f[i] + (xi[i] - s->mu_f[i]) / (1 - t);
+        if (mu < -SKIN_BARY_SLACK) return HUGE_VAL;
+        sum += mu;
+    }
+    if (1 - sum < -SKIN_BARY_SLACK) return HUGE_VAL;
+    for (int c = 0; c < 3; c++) {
+        proj[c] = s->a[c];
+        for (int i = 0; i < s->k; i++)
+            proj[c] += xi[i] * s->e[i][c];
+    }
+    double q2 = 0, p2 = 0;
+    for (int c = 0; c < 3; c++) {
+        q2 += (x[c] - proj[c]) * (x[c] - proj[c]);
+        p2 += (proj[c] - s->f[c]) * (proj[c] - s->f[c]);
+    }
+    return q2 - t / (1 - t) * p2 + t * s->w;
+}
+
+double fl_skin_function_value(const fl_skin_function *skin, const double x[3])
+{
+    size_t cell = 0;
+    for (int c = 2; c >= 0; c--) {
+        double u = floor((x[c] - skin->origin[c]) / skin->cell);
+        if (!(u >= 0 && u < (double)skin->dims[c])) return HUGE_VAL;
+        cell = cell * skin->dims[c] + (size_t)u;
+    }
+    double best = HUGE_VAL;
+    for (size_t i = skin->cell_start[cell]; i < skin->cell_start[cell + 1]; i++) {
+        double v = simplex_value(&skin->simplex[skin->cell_item[i]], skin->t, x);
+        if (v < best) best = v;
+    }
+    return best;
+}
+
+void fl_skin_function_free(fl_skin_function *skin)
+{
+    if (!skin) return;
+    free(skin->simplex);
+    free(skin->cell_start);
+    free(skin->cell_item);
+    free(skin);
+}
+
+/* ---- candidate simplices ---- */
+
+static int add_simplex(fl_vec *v, const double *xyzw, const uint32_t *idx, int k)
+{
+    skin_simplex s;
+    if (simplex_setup(xyzw, idx, k, &s)) return 0; /* affinely dependent: never a minimiser */
+    return fl_vec_push(v, &s, 1);
+}
+
+/* Few balls: every subset of at most 4 balls is a candidate (a superset of the regular
+ * triangulation's simplices, so the minimum is still G; no triangulation, no degeneracy). */
+static int subsets(fl_vec *v, const double *xyzw, size_t n)
+{
+    uint32_t idx[4];
+    for (uint32_t mask = 1; mask < (1u << n); mask++) {
+        int k = 0;
+        for (uint32_t i = 0; i < n && k <= 4; i++)
+            if (mask >> i & 1) {
+                if (k < 4) idx[k] = i;
+                k++;
+            }
+        if (k <= 4 && add_simplex(v, xyzw, idx, k - 1)) return -1;
+    }
+    return 0;
+}
+
+static int cmp_tuple(const void *pa, const void *pb)
+{
+    const uint32_t *a = pa, *b = pb;
+    for (int i = 0; i < 4; i++)
+        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+    return 0;
+}
+
+static void sort_small(uint32_t *a, int n)
+{
+    for (int i = 1; i < n; i++)
+        for (int j = i; j > 0 && a[j - 1] > a[j]; j--) {
+            uint32_t tmp = a[j];
+            a[j] = a[j - 1];
+            a[j - 1] = tmp;
+        }
+}
+
+/* Every face of every tetrahedron of the regular triangulation, each once: 15 sub-tuples a
+ * tetrahedron (padded with UINT32_MAX), sorted and deduplicated. */
+static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, fl_error *err)
+{
+    fl_rt3 rt;
+    fl_status st = fl_rt3_build(xyzw, n, NULL, &rt, err);
+    if (st == FL_ERR_ALGORITHM)
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: %s", err ? err->message : "");
+    if (st) return st;
+    uint32_t *tup = fl_alloc_array(rt.tet_count * 15, 4 * sizeof(uint32_t));
+    if (!tup) {
+        fl_rt3_free(&rt);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    }
+    size_t m = 0;
+    for (size_t t = 0; t < rt.tet_count; t++) {
+        for (uint32_t mask = 1; mask < 16; mask++) {
+            uint32_t *u = tup + 4 * m++;
+            int k = 0;
+            for (int i = 0; i < 4; i++)
+                if (mask >> i & 1) u[k++] = rt.tet[4 * t + i];
+            sort_small(u, k);
+            for (int i = k; i < 4; i++)
+                u[i] = UINT32_MAX;
+        }
+    }
+    fl_rt3_free(&rt);
+    qsort(tup, m, 4 * sizeof(uint32_t), cmp_tuple);
+    for (size_t i = 0; i < m; i++) {
+        if (i > 0 && !cmp_tuple(tup + 4 * i, tup + 4 * (i - 1))) continue;
+        int k = 0;
+        while (k < 4 && tup[4 * i + k] != UINT32_MAX)
+            k++;
+        if (add_simplex(v, xyzw, tup + 4 * i, k - 1)) {
+            free(tup);
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+        }
+    }
+    free(tup);
+    return FL_OK;
+}
+
+/* ---- the grid index ---- */
+
+static void simplex_box(const skin_simplex *s, double lo[3], double hi[3])
+{
+    for (int c = 0; c < 3; c++)
+        lo[c] = hi[c] = s->a[c];
+    for (int j = 0; j < s->k; j++)
+        for (int c = 0; c < 3; c++) {
+            double u = s->a[c] + s->e[j][c];
+            if (u < lo[c]) lo[c] = u;
+            if (u > hi[c]) hi[c] = u;
+        }
+}
+
+/* Cells of the index met by s's box grown by the reach: [c0, c1] per axis. */
+static void simplex_cells(const fl_skin_function *sk, const skin_simplex *s, size_t c0[3],
+                          size_t c1[3])
+{
+    double lo[3], hi[3];
+    simplex_box(s, lo, hi);
+    for (int c = 0; c < 3; c++) {
+        double u0 = floor((lo[c] - sk->reach - sk->origin[c]) / sk->cell);
+        double u1 = floor((hi[c] + sk->reach - sk->origin[c]) / sk->cell);
+        c0[c] = u0 < 0 ? 0 : (size_t)u0;
+        c1[c] = u1 >= (double)sk->dims[c] ? sk->dims[c] - 1 : (size_t)u1;
+    }
+}
+
+static double dot3(const double *u, const double *v)
+{
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+static void cross3(const double *u, const double *v, double *w)
+{
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+}
+
+/* 0 only when c is certainly farther than d from simplex s. Conservative half-space tests: a
+ * point within d of the simplex is within d outside each facet's plane (and within d of the
+ * plane or line of a triangle or edge). Keeps long simplices out of the index cells they only
+ * pass far from. */
+static int may_be_near(const skin_simplex *s, const double c[3], double d)
+{
+    double p[4][3], v[3];
+    for (int i = 0; i <= s->k; i++)
+        for (int j = 0; j < 3; j++)
+            p[i][j] = s->a[j] + (i ? s->e[i - 1][j] : 0);
+    for (int j = 0; j < 3; j++)
+        v[j] = c[j] - s->a[j];
+    if (s->k == 0) return 1;
+    if (s->k == 1) {
+        double len = sqrt(dot3(s->e[0], s->e[0])), along = dot3(v, s->e[0]) / len;
+        if (along < -d || along > len + d) return 0;
+        return dot3(v, v) - along * along <= d * d;
+    }
+    static const int face[4][4] = {{1, 2, 3, 0}, {0, 2, 3, 1}, {0, 1, 3, 2}, {0, 1, 2, 3}};
+    double n[3];
+    if (s->k == 2) {
+        cross3(s->e[0], s->e[1], n);
+        double nl = sqrt(dot3(n, n));
+        if (fabs(dot3(n, v)) > d * nl) return 0;
+        for (int i = 0; i < 3; i++) { /* edge p[i] p[(i+1)%3], outward in the plane */
+            const double *a = p[i], *b = p[(i + 1) % 3], *o = p[(i + 2) % 3];
+            double e[3], m[3], w[3], q[3];
+            for (int j = 0; j < 3; j++) {
+                e[j] = b[j] - a[j];
+                w[j] = o[j] - a[j];
+                q[j] = c[j] - a[j];
+            }
+            cross3(n, e, m);
+            double sgn = dot3(m, w) > 0 ? -1 : 1, ml = sqrt(dot3(m, m));
+            if (sgn * dot3(m, q) > d * ml) return 0;
+        }
+        return 1;
+    }
+    for (int f = 0; f < 4; f++) {
+        const double *a = p[face[f][0]], *b = p[face[f][1]], *cc = p[face[f][2]];
+        const double *o = p[face[f][3]];
+        double e1[3], e2[3], w[3], q[3];
+        for (int j = 0; j < 3; j++) {
+            e1[j] = b[j] - a[j];
+            e2[j] = cc[j] - a[j];
+            w[j] = o[j] - a[j];
+            q[j] = c[j] - a[j];
+        }
+        cross3(e1, e2, n);
+        double sgn = dot3(n, w) > 0 ? -1 : 1, nl = sqrt(dot3(n, n));
+        if (sgn * dot3(n, q) > d * nl) return 0;
+    }
+    return 1;
+}
+
+/* Cell centre of cell (x, y, z). */
+static void cell_centre(const fl_skin_function *sk, size_t x, size_t y, size_t z, double c[3])
+{
+    c[0] = sk->origin[0] + ((double)x + 0.5) * sk->cell;
+    c[1] = sk->origin[1] + ((double)y + 0.5) * sk->cell;
+    c[2] = sk->origin[2] + ((double)z + 0.5) * sk->cell;
+}
+
+/* Registers simplex i in every cell near it (pass 0 counts into cell_start[id + 1], pass 1
+ * fills, pass 2 only counts); returns the number of cells. */
+static double register_simplex(fl_skin_function *sk, size_t i, int pass)
+{
+    size_t c0[3], c1[3];
+    const skin_simplex *s = &sk->simplex[i];
+    simplex_cells(sk, s, c0, c1);
+    /* a cell holds a point within the reach iff its centre is within reach + half diagonal */
+    double d = (sk->reach + 0.8660254037844387 * sk->cell) * (1 + 1e-9);
+    double count = 0;
+    for (size_t z = c0[2]; z <= c1[2]; z++)
+        for (size_t y = c0[1]; y <= c1[1]; y++)
+            for (size_t x = c0[0]; x <= c1[0]; x++) {
+                double c[3];
+                cell_centre(sk, x, y, z, c);
+                if (!may_be_near(s, c, d)) continue;
+                count++;
+                size_t id = (z * sk->dims[1] + y) * sk->dims[0] + x;
+                if (pass == 0)
+                    sk->cell_start[id + 1]++;
+                else if (pass == 1)
+                    sk->cell_item[sk->cell_start[id]++] = (uint32_t)i;
+            }
+    return count;
+}
+
+/* Two passes over the simplices (count, then fill) into CSR arrays. */
+static fl_status build_index(fl_skin_function *sk, fl_error *err)
+{
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (size_t i = 0; i < sk->simplex_count; i++) {
+        double l[3], h[3];
+        simplex_box(&sk->simplex[i], l, h);
+        for (int c = 0; c < 3; c++) {
+            if (l[c] < lo[c]) lo[c] = l[c];
+            if (h[c] > hi[c]) hi[c] = h[c];
+        }
+    }
+    /* Registration covers the box grown by the reach, so any cell size is correct; cells of a
+     * half the reach keep the candidate lists short, capped at ~2^18 cells (registering a long
+     * simplex visits every cell of its box). Long simplices (across a hollow ball set, e.g. a ring)
+     * meet many cells: the cells grow until the registrations fit in max(2e7, 64 per simplex),
+     * trading memory for longer lists. */
+    double vol = 1;
+    for (int c = 0; c < 3; c++) {
+        sk->origin[c] = lo[c] - sk->reach;
+        vol *= hi[c] - lo[c] + 2 * sk->reach;
+    }
+    double budget = fmax(2e7, 64.0 * (double)sk->simplex_count);
+    size_t cells = 1;
+    for (double cell = fmax(0.5 * sk->reach, cbrt(vol / 262144.0));; cell *= 1.5) {
+        sk->cell = cell;
+        cells = 1;
+        for (int c = 0; c < 3; c++) {
+            sk->dims[c] = (size_t)((hi[c] - lo[c] + 2 * sk->reach) / sk->cell) + 1;
+            cells *= sk->dims[c];
+        }
+        double total = 0;
+        for (size_t i = 0; i < sk->simplex_count; i++)
+            total += register_simplex(sk, i, 2);
+        if (total <= budget || cells == 1) break;
+    }
+    sk->cell_start = fl_calloc_array(cells + 1, sizeof(size_t));
+    if (!sk->cell_start) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    for (int pass = 0; pass < 2; pass++) {
+        for (size_t i = 0; i < sk->simplex_count; i++)
+            register_simplex(sk, i, pass);
+        if (pass == 0) {
+            for (size_t id = 0; id < cells; id++)
+                sk->cell_start[id + 1] += sk->cell_start[id];
+            sk->cell_item = fl_alloc_array(sk->cell_start[cells] + 1, sizeof(uint32_t));
+            if (!sk->cell_item) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+        } else {
+            /* the fill advanced each start to the next cell's start: shift back */
+            memmove(sk->cell_start + 1, sk->cell_start, cells * sizeof(size_t));
+            sk->cell_start[0] = 0;
+        }
+    }
+    return FL_OK;
+}
+
+fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_function **out,
+                               fl_error *err)
+{
+    if (!out || (!xyzw && n)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "skin: NULL argument");
+    *out = NULL;
+    if (!(t > 0 && t < 1))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "skin: t must lie in (0, 1), got %g", t);
+    if (n >= UINT32_MAX / 2) return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: too many balls");
+    double wmax = 0;
+    for (size_t i = 0; i < 4 * n; i++)
+        if (!isfinite(xyzw[i]) || fabs(xyzw[i]) > 1e100)
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                           "skin: ball %zu has a non-finite or huge coordinate", i / 4);
+    for (size_t i = 0; i < n; i++)
+        wmax = fmax(wmax, xyzw[4 * i + 3]);
+    if (!(wmax > 0))
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: no ball has a positive radius");
+    fl_skin_function *sk = calloc(1, sizeof *sk);
+    if (!sk) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    sk->t = t;
+    sk->wmax = wmax;
+    sk->reach = sqrt(t * wmax);
+    fl_vec v;
+    fl_vec_init(&v, sizeof(skin_simplex));
+    fl_status st = FL_OK;
+    if (n <= 8) {
+        if (subsets(&v, xyzw, n)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    } else {
+        st = rt_simplices(&v, xyzw, n, err);
+    }
+    sk->simplex_count = v.count;
+    sk->simplex = fl_vec_release(&v);
+    if (!st) st = build_index(sk, err);
+    if (st) {
+        fl_skin_function_free(sk);
+        return st;
+    }
+    *out = sk;
+    return FL_OK;
+}

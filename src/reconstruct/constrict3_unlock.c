@@ -38,6 +38,9 @@ typedef struct candidate {
     uint32_t t1, t2, v1, v2; /* tetrahedra and their versions when found */
     uint32_t p;              /* the inside point */
     int kw;                  /* corner of t1 opposite the shared face */
+    uint32_t t3, v3;         /* two-step candidates: t2 holds no p; t3 (apex p) is first flipped
+                                with t2 across t2's face opposite corner kv; NONE otherwise */
+    int kv;
 } candidate;
 
 static int cand_cmp(const void *x, const void *y)
@@ -89,6 +92,24 @@ static int cand_push(cand_vec *v, candidate c)
     return 0;
 }
 
+/* Pushes cd once per boundary face of t1 (other than the shared one) that the flip would open,
+ * keyed by the γ-indicator of that face with respect to p, plus `penalty`. */
+static int push_each_face(const constrict3_state *s, candidate *cd, unsigned bmask,
+                          double penalty, cand_vec *out)
+{
+    const uint32_t *c = s->tet + 4 * (size_t)cd->t1;
+    for (int kz = 0; kz < 4; kz++) {
+        if (kz == cd->kw || !(bmask >> kz & 1)) continue;
+        if (s->keepmask && (s->keepmask[cd->t1] >> kz & 1)) continue;
+        const int *f = constrict3_face[kz];
+        cd->key = constrict3_gamma_indicator(pt(s, c[f[0]]), pt(s, c[f[1]]), pt(s, c[f[2]]),
+                                             pt(s, cd->p));
+        cd->key = isnan(cd->key) ? 4.0 + penalty : cd->key + penalty;
+        if (cand_push(out, *cd) != 0) return -1;
+    }
+    return 0;
+}
+
 /* The candidate flips of region tetrahedron t1 (see the file comment). */
 static int candidates_of(const constrict3_state *s, uint32_t t1, unsigned bmask, cand_vec *out)
 {
@@ -100,17 +121,33 @@ static int candidates_of(const constrict3_state *s, uint32_t t1, unsigned bmask,
         uint32_t xyz[3];
         for (int i = 0; i < 3; i++)
             xyz[i] = c[constrict3_face[kw][i]];
-        uint32_t p = s->tet[4 * (size_t)t2 + corner_not_in(s, t2, xyz)];
-        if (s->bfaces[p] != 0 || !crosses(s, c[kw], p, xyz)) continue;
-        for (int kz = 0; kz < 4; kz++) {
-            if (kz == kw || !(bmask >> kz & 1)) continue;
-            if (s->keepmask && (s->keepmask[t1] >> kz & 1)) continue;
-            const int *f = constrict3_face[kz];
-            candidate cd = {constrict3_gamma_indicator(pt(s, c[f[0]]), pt(s, c[f[1]]),
-                                                       pt(s, c[f[2]]), pt(s, p)),
-                            t1, t2, s->version[t1], s->version[t2], p, kw};
-            if (isnan(cd.key)) cd.key = 4.0;
-            if (cand_push(out, cd) != 0) return -1;
+        int kq = corner_not_in(s, t2, xyz);
+        uint32_t p = s->tet[4 * (size_t)t2 + kq];
+        candidate cd = {0, t1, t2, s->version[t1], s->version[t2], p, kw, NONE, 0, 0};
+        if (s->bfaces[p] == 0) {
+            if (crosses(s, c[kw], p, xyz) && push_each_face(s, &cd, bmask, 0, out) != 0)
+                return -1;
+            continue;
+        }
+        /* two steps: t2 = xyzq with q on the boundary; a neighbour t3 of t2 across the face
+         * opposite v in {x, y, z} with apex p inside; flipping t2, t3 makes x y z p (vp must
+         * cross that face), which the second flip takes with t1 (wp must cross xyz) */
+        for (int kv = 0; kv < 4; kv++) {
+            if (kv == kq) continue;
+            uint32_t t3 = s->adj[4 * (size_t)t2 + kv];
+            if (t3 == NONE || s->removed[t3]) continue;
+            if (s->keepmask && (s->keepmask[t2] >> kv & 1)) continue;
+            uint32_t f2[3];
+            for (int i = 0; i < 3; i++)
+                f2[i] = s->tet[4 * (size_t)t2 + constrict3_face[kv][i]];
+            cd.p = s->tet[4 * (size_t)t3 + corner_not_in(s, t3, f2)];
+            if (s->bfaces[cd.p] != 0 || !crosses(s, c[kw], cd.p, xyz) ||
+                !crosses(s, s->tet[4 * (size_t)t2 + kv], cd.p, f2))
+                continue;
+            cd.t3 = t3;
+            cd.v3 = s->version[t3];
+            cd.kv = kv;
+            if (push_each_face(s, &cd, bmask, 1.0, out) != 0) return -1;
         }
     }
     return 0;
@@ -251,9 +288,26 @@ int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constri
     if (!used || compact(s, duplicate_of, &u, &un, &map) != 0) goto done;
     for (size_t i = 0; i < v.count; i++) {
         const candidate *cd = &v.a[i];
-        if (used[cd->p] || s->version[cd->t1] != cd->v1 || s->version[cd->t2] != cd->v2)
+        if (used[cd->p] || s->version[cd->t1] != cd->v1 || s->version[cd->t2] != cd->v2 ||
+            (cd->t3 != NONE && s->version[cd->t3] != cd->v3))
             continue; /* this point has its flip, or a tetrahedron was flipped already */
-        if (s->tet_count == s->cap && grow(s) != 0) goto done;
+        if (s->tet_count + 2 > s->cap && grow(s) != 0) goto done;
+        candidate second = *cd;
+        if (cd->t3 != NONE) { /* first step: t2 with t3, giving x y z p next to t1 */
+            const uint32_t *o2 = s->tet + 4 * (size_t)cd->t2;
+            uint32_t vx = o2[cd->kv], f2[3];
+            for (int j = 0; j < 3; j++)
+                f2[j] = o2[constrict3_face[cd->kv][j]];
+            candidate first = {0, cd->t2, cd->t3, 0, 0, cd->p, cd->kv, NONE, 0, 0};
+            uint32_t slot[3];
+            flip23(s, &first, slot);
+            (*flips)++;
+            lower_c0(u, un, map, vx, cd->p, f2, c0);
+            second.t2 = s->adj[4 * (size_t)cd->t1 + cd->kw];
+            for (int j = 0; j < 3; j++)
+                if (push(s, ctx, slot[j]) != 0) goto done;
+        }
+        cd = &second;
         const uint32_t *o1 = s->tet + 4 * (size_t)cd->t1;
         uint32_t w = o1[cd->kw], xyz[3];
         for (int j = 0; j < 3; j++)

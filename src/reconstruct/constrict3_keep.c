@@ -49,8 +49,8 @@ static fl_status collect(const constrict3_state *s, const uint32_t *rep, const u
         sort3(f[i].v);
         if (f[i].v[0] == f[i].v[1] || f[i].v[1] == f[i].v[2])
             return fl_fail(err, FL_ERR_INPUT, NULL, -1,
-                           "kept triangle %zu (%u %u %u) repeats a point (or a duplicate of it)",
-                           i, k[0], k[1], k[2]);
+                           "kept triangle %zu (%u %u %u) repeats a point (or a duplicate of it)", i,
+                           k[0], k[1], k[2]);
     }
     qsort(f, *count, sizeof *f, kept_cmp);
     size_t m = 0;

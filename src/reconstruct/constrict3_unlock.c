@@ -94,8 +94,8 @@ static int cand_push(cand_vec *v, candidate c)
 
 /* Pushes cd once per boundary face of t1 (other than the shared one) that the flip would open,
  * keyed by the γ-indicator of that face with respect to p, plus `penalty`. */
-static int push_each_face(const constrict3_state *s, candidate *cd, unsigned bmask,
-                          double penalty, cand_vec *out)
+static int push_each_face(const constrict3_state *s, candidate *cd, unsigned bmask, double penalty,
+                          cand_vec *out)
 {
     const uint32_t *c = s->tet + 4 * (size_t)cd->t1;
     for (int kz = 0; kz < 4; kz++) {
@@ -125,8 +125,7 @@ static int candidates_of(const constrict3_state *s, uint32_t t1, unsigned bmask,
         uint32_t p = s->tet[4 * (size_t)t2 + kq];
         candidate cd = {0, t1, t2, s->version[t1], s->version[t2], p, kw, NONE, 0, 0};
         if (s->bfaces[p] == 0) {
-            if (crosses(s, c[kw], p, xyz) && push_each_face(s, &cd, bmask, 0, out) != 0)
-                return -1;
+            if (crosses(s, c[kw], p, xyz) && push_each_face(s, &cd, bmask, 0, out) != 0) return -1;
             continue;
         }
         /* two steps: t2 = xyzq with q on the boundary; a neighbour t3 of t2 across the face

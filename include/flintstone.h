@@ -796,9 +796,10 @@ typedef struct fl_reconstruction3 {
     uint32_t *inside;             /* their indices (points_inside entries, ascending) */
     int all_on_boundary;          /* 1 iff points_inside == 0 and keep_missing == 0 */
     double volume;                /* sum of the interior tetrahedra's volumes (positive) */
-    double augmented_c0; /* c0 of γ([-1,1],[c0,1]) needed (§5.4): the smallest c0' (Def. 3.3,
-                            fl_gamma_simplex_params) of the triangles the unlocking flips
-                            added; NaN: Delaunay sufficed or augmentation was not tried */
+    double augmented_c0; /* c0 of γ([-1,1],[c0,1]) needed (§5.4): the smallest c1' (Def. 3.3,
+                            fl_gamma_simplex_params: the triangle is in γ([-1,1],[c0,1]) iff
+                            c1' >= c0) of the triangles the unlocking flips added; NaN:
+                            Delaunay sufficed or augmentation was not tried */
     char reason[256];    /* empty when all_on_boundary is 1, else why points remain inside */
     size_t flip_count;   /* 2-3 flips made to unlock constriction (0 when not locked) */
     size_t keep_missing; /* distinct kept triangles that are not on the final boundary */

@@ -75,7 +75,7 @@ fl_status constrict3_mark_kept(constrict3_state *s, const uint32_t *rep, const u
  * is removable but points remain inside: makes non-conflicting flips, each turning a region
  * tetrahedron with a boundary face into one whose opposite vertex is an inside point (so it is
  * removable), and pushes those onto the heap through push(). *flips receives how many were
- * made (0: none possible) and *c0 is lowered to the smallest c0' of the triangles added.
+ * made (0: none possible) and *c0 is lowered to the smallest c1' of the triangles added.
  * Returns 0, or -1 on NOMEM. */
 typedef int (*constrict3_push_fn)(constrict3_state *s, void *ctx, uint32_t t);
 int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constrict3_push_fn push,

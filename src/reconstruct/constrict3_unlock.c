@@ -13,7 +13,7 @@
  *   bipyramid and the 2-3 flip replaces it by wpxy, wpyz, wpzx: the same volume, the same outer
  *   faces, so the region and its boundary do not change. The triangle xyz leaves the graph
  *   (it is the triangle that crosses the new tetrahedra) and wpx, wpy, wpz join it; these are
- *   triangles of γ([-1,1],[c0,1]) for c0 = their c0' (Def. 3.3). Now wpxy has one boundary
+ *   triangles of γ([-1,1],[c0,1]) for c0 = their c1' (Def. 3.3). Now wpxy has one boundary
  *   face, wxy, and its opposite vertex p is inside, so the ordinary rule of §5.3 may remove it
  *   - a shelling step, after which the boundary is again an embedded sphere, with p on it.
  *
@@ -232,17 +232,20 @@ static void flip23(constrict3_state *s, const candidate *cd, uint32_t slot[3])
     s->region_count++;
 }
 
-/* Lowers *c0 to the c0' of the triangles w p x, w p y, w p z that a flip adds. `u` holds the
- * distinct points and `map` their compact indices (fl_gamma_simplex_params wants distinct
- * points). A triangle without an empty neighbourhood counts as c0 = -1, the end of the range. */
+/* Lowers *c0 to the smallest c0 for which γ([-1,1],[c0,1]) holds the triangles w p x, w p y,
+ * w p z that a flip adds: by Def. 3.3 a triangle is in it when some N_γ(c, c') with c' >= c0 is
+ * empty, i.e. when its largest empty neighbourhood's c1' (fl_gamma_simplex_params) is >= c0.
+ * `u` holds the distinct points and `map` their compact indices (fl_gamma_simplex_params wants
+ * distinct points). A triangle without any empty neighbourhood counts as -1, the end of the
+ * range. */
 static void lower_c0(const double *u, size_t un, const uint32_t *map, uint32_t w, uint32_t p,
                      const uint32_t *xyz, double *c0)
 {
     for (int i = 0; i < 3; i++) {
         uint32_t tri[3] = {map[w], map[p], map[xyz[i]]};
-        double a = -1, b;
-        if (fl_gamma_simplex_params(u, un, 3, tri, &a, &b) != 1) a = -1;
-        if (isnan(*c0) || a < *c0) *c0 = a;
+        double a, c1 = -1;
+        if (fl_gamma_simplex_params(u, un, 3, tri, &a, &c1) != 1) c1 = -1;
+        if (isnan(*c0) || c1 < *c0) *c0 = c1;
     }
 }
 

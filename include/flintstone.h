@@ -742,7 +742,12 @@ void fl_reconstruction2_free(fl_reconstruction2 *rec);
  * boundary, one with two boundary triangles only while its opposite edge is not on the
  * boundary, one with three never. Among the removable tetrahedra the one with the smallest key
  * goes first. Constriction stops when every distinct point is on the boundary (then `extra`
- * more removals), or when nothing is removable ("locked", thesis §4.3.3 / §5.4). */
+ * more removals). When nothing is removable with points inside ("locked", thesis §4.3.3 /
+ * §5.4), 2-3 flips inside the region bring in overlapping tetrahedra of γ([-1,1],[c0,1]) whose
+ * opposite vertex is an inside point, and constriction goes on; the region stays a proper
+ * tetrahedralization, so the boundary stays an embedded sphere (docs/reconstruct3d.md: a partial
+ * §5.4, points no such flip reaches stay inside with a reason). Kept triangles (§5.7) are never
+ * deleted. */
 
 /* Which key orders the removable boundary tetrahedra. */
 typedef enum fl_reconstruct3_criterion {

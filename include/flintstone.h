@@ -753,7 +753,12 @@ void fl_reconstruction2_free(fl_reconstruction2 *rec);
  * boundary, one with two boundary triangles only while its opposite edge is not on the
  * boundary, one with three never. Among the removable tetrahedra the one with the smallest key
  * goes first. Constriction stops when every distinct point is on the boundary (then `extra`
- * more removals), or when nothing is removable ("locked", thesis §4.3.3 / §5.4). */
+ * more removals). When nothing is removable with points inside ("locked", thesis §4.3.3 /
+ * §5.4), 2-3 flips inside the region bring in overlapping tetrahedra of γ([-1,1],[c0,1]) whose
+ * opposite vertex is an inside point, and constriction goes on; the region stays a proper
+ * tetrahedralization, so the boundary stays an embedded sphere (docs/reconstruct3d.md: a partial
+ * §5.4, points no such flip reaches stay inside with a reason). Kept triangles (§5.7) are never
+ * deleted. */
 
 /* Which key orders the removable boundary tetrahedra. */
 typedef enum fl_reconstruct3_criterion {
@@ -776,6 +781,14 @@ typedef struct fl_reconstruct3_options {
                      same rule (the candlestick of thesis Fig. 5.5); 0 stops at once */
     fl_progress_fn progress; /* may be NULL; stage "constriction 3d" (and "delaunay 3d") */
     void *progress_user;
+    const uint32_t *keep; /* keep_count triples of input indices: triangles that must end up on
+                             the boundary and are never deleted (constrained constriction,
+                             §5.7); each must be a face of the Delaunay tetrahedralization.
+                             May be NULL */
+    size_t keep_count;
+    int no_augment; /* 1: when locked, stop and report (pure Delaunay constriction); 0
+                       (default): unlock by 2-3 flips that bring overlapping tetrahedra of
+                       γ([-1,1],[c0,1]), c0 < 0, into the region (§5.4, docs/reconstruct3d.md) */
 } fl_reconstruct3_options;
 
 /* The constructed boundary and its interior. Indices refer to the input points; of exact
@@ -786,20 +799,26 @@ typedef struct fl_reconstruction3 {
     size_t triangle_count; /* boundary triangles */
     uint32_t *tri;         /* 3 per triangle, counterclockwise seen from outside; together a
                               closed, oriented 2-manifold of genus 0 */
-    size_t tet_count;      /* interior tetrahedra (Delaunay tetrahedra not removed) */
+    size_t tet_count;      /* interior tetrahedra (Delaunay tetrahedra not removed, and those
+                              that unlocking flips created, see flip_count) */
     uint32_t *tet;         /* 4 per tetrahedron, positively oriented as in fl_dt3; their faces
-                              not shared by two of them are exactly the boundary triangles */
+                              not shared by two of them are exactly the boundary triangles;
+                              together a tetrahedralization of the enclosed volume */
     size_t delaunay_tet_count; /* tetrahedra of the Delaunay tetrahedralization */
     size_t removed_count;      /* tetrahedra removed by constriction (extra ones included) */
     size_t extra_removed;      /* of those, removed after every point was on the boundary */
     size_t boundary_vertex_count; /* distinct points on the boundary */
     size_t points_inside;         /* distinct points strictly inside the boundary */
     uint32_t *inside;             /* their indices (points_inside entries, ascending) */
-    int all_on_boundary;          /* 1 iff points_inside == 0 */
+    int all_on_boundary;          /* 1 iff points_inside == 0 and keep_missing == 0 */
     double volume;                /* sum of the interior tetrahedra's volumes (positive) */
-    double augmented_c0; /* c0 of γ([-1,1],[c0,1]) needed (§5.4); NaN: Delaunay sufficed or
-                            augmentation was not tried (see reason) */
+    double augmented_c0; /* c0 of γ([-1,1],[c0,1]) needed (§5.4): the smallest c1' (Def. 3.3,
+                            fl_gamma_simplex_params: the triangle is in γ([-1,1],[c0,1]) iff
+                            c1' >= c0) of the triangles the unlocking flips added; NaN:
+                            Delaunay sufficed or augmentation was not tried */
     char reason[256];    /* empty when all_on_boundary is 1, else why points remain inside */
+    size_t flip_count;   /* 2-3 flips made to unlock constriction (0 when not locked) */
+    size_t keep_missing; /* distinct kept triangles that are not on the final boundary */
 } fl_reconstruction3;
 
 /* Constructs the boundary polyhedron of the n points xyz[3i..3i+2] by constriction of their
@@ -808,7 +827,8 @@ typedef struct fl_reconstruction3 {
  * point is on the boundary the call still succeeds with all_on_boundary = 0, the points left
  * inside and a reason. `opt` may be NULL. Expected O(n log n) after the Delaunay
  * tetrahedralization. Errors (then *out is zeroed): FL_ERR_USAGE for NULL buffers or a bad
- * criterion; FL_ERR_INPUT for NaN/Inf coordinates or fewer than 4 distinct points;
+ * criterion; FL_ERR_INPUT for NaN/Inf coordinates, fewer than 4 distinct points, or a kept
+ * triangle with an index out of range, a repeated point, or that is not a Delaunay face;
  * FL_ERR_ALGORITHM when all points are coplanar or collinear, or when cancelled;
  * FL_ERR_NOMEM. */
 fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_options *opt,

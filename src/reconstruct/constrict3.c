@@ -21,11 +21,7 @@
 
 #define NONE UINT32_MAX
 
-static int face_is_boundary(const constrict3_state *s, uint32_t t, int k)
-{
-    uint32_t nb = s->adj[4 * (size_t)t + k];
-    return nb == NONE || s->removed[nb];
-}
+#define face_is_boundary constrict3_face_is_boundary
 
 static unsigned boundary_mask(const constrict3_state *s, uint32_t t)
 {
@@ -87,6 +83,7 @@ static double removal_key(const constrict3_state *s, uint32_t t, fl_reconstruct3
     } else {
         return NAN;
     }
+    if (s->keepmask && (s->keepmask[t] & m)) return NAN; /* would delete a kept face (§5.7) */
     double key = 0;
     if (crit == FL_RECONSTRUCT3_AREA_CHANGE)
         key = constrict3_area_change(s->p, c, m);
@@ -139,6 +136,7 @@ static int remove_tet(constrict3_state *s, constrict3_heap *h, uint32_t t,
             continue;
         }
         count_face(s, t, k, +1);
+        if (s->keepmask && (s->keepmask[t] >> k & 1)) s->keep_on++;
         s->version[nb]++;
         if (push_if_removable(s, h, nb, crit) != 0) return -1;
     }
@@ -171,43 +169,63 @@ static void debug_check(const constrict3_state *s, size_t n, size_t step)
 #define debug_check(s, n, step) ((void)(s), (void)(n), (void)(step))
 #endif
 
-/* Algorithm 5.1, lines 3-8, followed by `extra` removals. Returns FL_OK, or FL_ERR_NOMEM /
+typedef struct push_ctx {
+    constrict3_heap *h;
+    fl_reconstruct3_criterion crit;
+} push_ctx;
+
+static int push_cb(constrict3_state *s, void *ctx, uint32_t t)
+{
+    push_ctx *c = ctx;
+    return push_if_removable(s, c->h, t, c->crit);
+}
+
+/* Algorithm 5.1, lines 3-8, followed by `extra` removals; when locked with points inside,
+ * unlocking flips (§5.4, constrict3_unlock.c) and on. Returns FL_OK, or FL_ERR_NOMEM /
  * FL_ERR_ALGORITHM (cancelled) through err. */
-static fl_status constrict(constrict3_state *s, size_t unique, size_t n,
-                           const fl_reconstruct3_options *opt, size_t *extra_removed, fl_error *err)
+static fl_status constrict(constrict3_state *s, size_t unique, const uint32_t *duplicate_of,
+                           const fl_reconstruct3_options *opt, fl_reconstruction3 *out,
+                           fl_error *err)
 {
     constrict3_heap h = {0};
+    push_ctx ctx = {&h, opt->criterion};
     fl_status st = FL_OK;
-    if (initial_boundary(s, &h, opt->criterion) != 0) {
-        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory in 3D constriction");
-        goto done;
-    }
+    if (initial_boundary(s, &h, opt->criterion) != 0) goto nomem;
     size_t steps = 0;
-    *extra_removed = 0;
-    while (h.count > 0) {
-        int all_on = s->on_boundary >= unique;
-        if (all_on && *extra_removed >= opt->extra) break;
+    out->extra_removed = 0;
+    for (;;) {
+        int all_on = s->on_boundary >= unique && s->keep_on >= s->keep_total;
+        if (h.count == 0) {
+            if (all_on || opt->no_augment) break;
+            size_t flips = 0;
+            if (constrict3_unlock(s, duplicate_of, push_cb, &ctx, &flips, &out->augmented_c0))
+                goto nomem;
+            out->flip_count += flips;
+            if (flips == 0) break; /* locked for good: the reason says why */
+            continue;
+        }
+        if (all_on && out->extra_removed >= opt->extra) break;
         constrict3_entry e = constrict3_heap_pop(&h);
         if (s->removed[e.tet] || e.version != s->version[e.tet])
             continue; /* stale: a newer entry exists if it is still removable */
         if (isnan(removal_key(s, e.tet, opt->criterion)))
             continue; /* its vertex or edge joined the boundary meanwhile (Alg. 5.1 line 5) */
-        if (remove_tet(s, &h, e.tet, opt->criterion) != 0) {
-            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory in 3D constriction");
-            goto done;
-        }
-        if (all_on) (*extra_removed)++;
-        debug_check(s, n, ++steps);
+        if (remove_tet(s, &h, e.tet, opt->criterion) != 0) goto nomem;
+        if (all_on) out->extra_removed++;
+        debug_check(s, s->n, ++steps);
         if ((steps & 4095) == 0 && fl_progress(opt->progress, opt->progress_user, "constriction 3d",
                                                (double)s->on_boundary / (double)unique)) {
             st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
             goto done;
         }
     }
-    assert(constrict3_boundary_is_sphere(s, n));
+    assert(constrict3_boundary_is_sphere(s, s->n));
 done:
     constrict3_heap_free(&h);
     return st;
+nomem:
+    constrict3_heap_free(&h);
+    return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory in 3D constriction");
 }
 
 static fl_status validate(const double *xyz, size_t n, const fl_reconstruct3_options *opt,
@@ -220,16 +238,26 @@ static fl_status validate(const double *xyz, size_t n, const fl_reconstruct3_opt
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "fl_reconstruct3: unknown criterion %d (use 0 = gamma, 1 = area change)",
                        (int)opt->criterion);
+    if (!opt->keep && opt->keep_count)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_reconstruct3: keep is NULL");
     return FL_OK;
 }
 
-static void describe_lock(fl_reconstruction3 *out)
+static void describe_lock(fl_reconstruction3 *out, const fl_reconstruct3_options *opt)
 {
-    snprintf(out->reason, sizeof out->reason,
-             "constriction locked with %zu point%s inside: no boundary tetrahedron can be "
-             "removed without making the boundary non-manifold (thesis §4.3.3, §5.4); "
-             "augmentation with γ([-1,1],[c0,1]) is not implemented",
-             out->points_inside, out->points_inside == 1 ? "" : "s");
+    size_t in = out->points_inside;
+    const char *why = opt->no_augment ? "augmentation is off"
+                                      : "no 2-3 flip at the boundary reaches an inside point";
+    if (out->keep_missing && !in)
+        snprintf(out->reason, sizeof out->reason,
+                 "%zu kept triangle(s) not on the boundary: constriction locked before reaching "
+                 "them (thesis §5.7; kept faces block the way)",
+                 out->keep_missing);
+    else
+        snprintf(out->reason, sizeof out->reason,
+                 "constriction locked with %zu point(s) inside%s: no boundary tetrahedron is "
+                 "removable without a non-manifold boundary (thesis §4.3.3, §5.4) and %s",
+                 in, out->keep_missing ? ", kept triangles missing" : "", why);
 }
 
 fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_options *opt,
@@ -243,7 +271,14 @@ fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_opt
     fl_dt3_options dopt = {opt->progress, opt->progress_user, 0};
     st = fl_dt3_build(xyz, n, &dopt, &dt, err);
     if (st != FL_OK) return st;
-    constrict3_state s = {xyz, dt.tet_count, dt.tet, dt.adj, NULL, NULL, NULL, 0, dt.tet_count};
+    /* the state takes over the triangulation's arrays: unlocking flips grow and change them */
+    constrict3_state s = {0};
+    s.p = xyz;
+    s.n = n;
+    s.tet_count = s.cap = s.region_count = dt.tet_count;
+    s.tet = dt.tet;
+    s.adj = dt.adj;
+    dt.tet = dt.adj = NULL;
     s.removed = fl_calloc_array(dt.tet_count, 1);
     s.version = fl_calloc_array(dt.tet_count, sizeof *s.version);
     s.bfaces = fl_calloc_array(n, sizeof *s.bfaces);
@@ -251,24 +286,31 @@ fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_opt
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory in 3D constriction");
         goto done;
     }
-    size_t extra_removed = 0;
-    st = constrict(&s, dt.unique_count, n, opt, &extra_removed, err);
+    if (opt->keep_count) {
+        st = constrict3_mark_kept(&s, dt.duplicate_of, opt->keep, opt->keep_count, err);
+        if (st != FL_OK) goto done;
+    }
+    out->augmented_c0 = NAN; /* lowered by the unlocking flips, if any */
+    st = constrict(&s, dt.unique_count, dt.duplicate_of, opt, out, err);
     if (st != FL_OK) goto done;
     out->point_count = n;
     out->unique_count = dt.unique_count;
     out->delaunay_tet_count = dt.tet_count;
-    out->removed_count = dt.tet_count - s.region_count;
-    out->extra_removed = extra_removed;
-    out->augmented_c0 = NAN; /* γ([-1,1],[c0,1]) augmentation (§5.4) is not implemented */
+    out->removed_count = s.tet_count - s.region_count;
     if (constrict3_extract(&s, dt.duplicate_of, n, out) != 0) {
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory in 3D constriction");
         goto done;
     }
-    if (!out->all_on_boundary) describe_lock(out);
+    out->keep_missing = s.keep_total - s.keep_on;
+    out->all_on_boundary = out->points_inside == 0 && out->keep_missing == 0;
+    if (!out->all_on_boundary) describe_lock(out, opt);
 done:
     if (st != FL_OK) fl_reconstruction3_free(out);
+    free(s.tet);
+    free(s.adj);
     free(s.removed);
     free(s.version);
+    free(s.keepmask);
     free(s.bfaces);
     fl_dt3_free(&dt);
     return st;

@@ -42,20 +42,51 @@ int constrict3_heap_push(constrict3_heap *h, constrict3_entry e); /* 0, or -1 on
 constrict3_entry constrict3_heap_pop(constrict3_heap *h);         /* count must be > 0 */
 void constrict3_heap_free(constrict3_heap *h);
 
-/* The state of constriction over a Delaunay tetrahedralization. A tetrahedron is in the
- * region while removed[t] == 0; a face of a region tetrahedron is a boundary face when the
- * neighbour across it is removed or absent (convex hull). */
+/* The state of constriction over a tetrahedralization: at first the Delaunay one, later changed
+ * by the unlocking flips (constrict3_unlock.c), so it is a proper tetrahedralization of the
+ * convex hull but no longer necessarily Delaunay. A tetrahedron is in the region while
+ * removed[t] == 0; a face of a region tetrahedron is a boundary face when the neighbour across
+ * it is removed or absent (convex hull). The per-tetrahedron arrays have room for `cap`. */
 typedef struct constrict3_state {
     const double *p;     /* input points */
-    size_t tet_count;    /* Delaunay tetrahedra */
-    const uint32_t *tet; /* 4 per tetrahedron */
-    const uint32_t *adj; /* 4 per tetrahedron, UINT32_MAX on the hull */
+    size_t n;            /* input points */
+    size_t tet_count;    /* tetrahedra (slots) */
+    size_t cap;          /* allocated slots */
+    uint32_t *tet;       /* 4 per tetrahedron, positively oriented */
+    uint32_t *adj;       /* 4 per tetrahedron, UINT32_MAX on the hull */
     uint8_t *removed;    /* per tetrahedron */
+    uint8_t *keepmask;   /* per tetrahedron: bit k = the face opposite corner k is kept; NULL
+                            when nothing is kept */
     uint32_t *version;   /* per tetrahedron: bumped when its boundary faces change */
     uint32_t *bfaces;    /* per point: boundary faces incident to it */
     size_t on_boundary;  /* distinct points with bfaces > 0 */
     size_t region_count; /* tetrahedra not removed */
+    size_t keep_total;   /* distinct kept triangles */
+    size_t keep_on;      /* of those, on the boundary now */
 } constrict3_state;
+
+/* Marks the kept triangles (§5.7) in s->keepmask (allocated here) and counts those on the
+ * initial boundary. rep maps every input index to its first duplicate. FL_ERR_INPUT for a bad
+ * triple or one that is not a face of the triangulation; FL_ERR_NOMEM. */
+fl_status constrict3_mark_kept(constrict3_state *s, const uint32_t *rep, const uint32_t *keep,
+                               size_t count, fl_error *err);
+
+/* Unlocking (§5.4) by 2-3 flips, see constrict3_unlock.c. Called when no boundary tetrahedron
+ * is removable but points remain inside: makes non-conflicting flips, each turning a region
+ * tetrahedron with a boundary face into one whose opposite vertex is an inside point (so it is
+ * removable), and pushes those onto the heap through push(). *flips receives how many were
+ * made (0: none possible) and *c0 is lowered to the smallest c1' of the triangles added.
+ * Returns 0, or -1 on NOMEM. */
+typedef int (*constrict3_push_fn)(constrict3_state *s, void *ctx, uint32_t t);
+int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constrict3_push_fn push,
+                      void *ctx, size_t *flips, double *c0);
+
+/* 1 when face k of region tetrahedron t is on the boundary. */
+static inline int constrict3_face_is_boundary(const constrict3_state *s, uint32_t t, int k)
+{
+    uint32_t nb = s->adj[4 * (size_t)t + k];
+    return nb == UINT32_MAX || s->removed[nb];
+}
 
 /* Fills out's tri, tet, inside, counts and volume from the final state; 0 or -1 on NOMEM. */
 int constrict3_extract(const constrict3_state *s, const uint32_t *duplicate_of, size_t n,

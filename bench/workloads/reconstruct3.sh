@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# 3D boundary construction (`flintstone reconstruct`, docs/reconstruct3d.md) against CGAL's
+# Advancing Front surface reconstruction (bench/peers/cgal_afront.cpp) on the same scattered
+# points, in the same run: the point sets of libcgal-demo (kitten, blobby, sphere_20k, oneK;
+# only x y z kept) and the vertices of npm's bunny (bench/get-data.sh fetches both).
+#
+# Per input, one ROW line:
+#   ours: seconds of `flintstone reconstruct --json` (read + Delaunay + constriction + unlocking),
+#         of `flintstone delaunay --json` on the same file (read + Delaunay), their ratio (issue
+#         6 target <= 3), points on the boundary, flips, closed / genus / self-intersections of
+#         the written mesh by `flintstone check`;
+#   CGAL: its reconstruction time (best of 3, in-process; ours is one whole process, so the
+#         ratio favours CGAL slightly), the fraction of points its surface uses (points minus
+#         check's unreferenced vertices), closed / genus / self-intersections by the same check.
+# Not measured (yet): distance between the two surfaces.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+cache=${BENCH_CACHE:-$root/bench/cache}
+build=${FL_BENCH_BUILD:-$root/build-bench}
+out=$root/bench/out/reconstruct3
+bin=$root/bench/out/bin
+mkdir -p "$out" "$bin"
+
+if [ ! -x "$build/flintstone" ]; then
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build "$build" -j 2 --target flintstone >/dev/null
+fl=$build/flintstone
+peer=$bin/cgal_afront
+if [ ! -x "$peer" ] || [ "$root/bench/peers/cgal_afront.cpp" -nt "$peer" ]; then
+  echo "building cgal_afront (about a minute)" >&2
+  ${CXX:-c++} -std=c++17 -O2 -DNDEBUG -o "$peer" "$root/bench/peers/cgal_afront.cpp" -lgmp -lmpfr
+fi
+
+jget() { python3 -c "import json,sys; d=json.load(sys.stdin); print(d.get('$1'))"; }
+
+inputs=(cgal/data/points_3/oneK.xyz cgal/data/points_3/kitten.xyz cgal/data/points_3/blobby.xyz
+        cgal/data/points_3/sphere_20k.xyz real/bunny.xyz)
+printf '%-12s %7s | %8s %8s %5s %9s %5s %s | %8s %6s %9s %s\n' input points ours_s dt_s ratio \
+  on_bnd flips "closed/genus/si" cgal_s ratio used "closed/genus/si"
+for rel in "${inputs[@]}"; do
+  src=$cache/$rel
+  [ -e "$src" ] || { echo "missing $src (run bench/get-data.sh)" >&2; continue; }
+  name=$(basename "$rel" .xyz)
+  pts=$out/$name.xyz
+  awk 'NF >= 3 { print $1, $2, $3 }' "$src" >"$pts"
+  n=$(wc -l <"$pts")
+  ours=$("$fl" reconstruct "$pts" --json -o "$out/$name.ours.off" 2>/dev/null || true)
+  dt=$("$fl" delaunay "$pts" --json 2>/dev/null)
+  cg=$("$peer" "$pts" "$out/$name.cgal.off")
+  co=$("$fl" check "$out/$name.ours.off" --json || true)
+  cc=$("$fl" check "$out/$name.cgal.off" --json || true)
+  os=$(jget seconds <<<"$ours"); ds=$(jget seconds <<<"$dt"); cs=$(jget seconds <<<"$cg")
+  ob=$(jget boundary_vertices <<<"$ours"); uq=$(jget points <<<"$ours")
+  cu=$(jget unreferenced_vertices <<<"$cc")
+  printf 'ROW %-12s %7d | %8.3f %8.3f %5.2f %9s %5s %s/%s/%s | %8.3f %6.2f %9s %s/%s/%s\n' \
+    "$name" "$n" "$os" "$ds" "$(python3 -c "print($os/$ds)")" "$ob/$uq" \
+    "$(jget flips <<<"$ours")" "$(jget closed <<<"$co")" "$(jget genus <<<"$co")" \
+    "$(jget self_intersections <<<"$co")" "$cs" "$(python3 -c "print($os/$cs)")" \
+    "$((n - cu))/$n" "$(jget closed <<<"$cc")" "$(jget genus <<<"$cc")" \
+    "$(jget self_intersections <<<"$cc")"
+done

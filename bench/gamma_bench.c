@@ -79,8 +79,8 @@ int main(int argc, char **argv)
         fl_graph_free(&g);
     }
     double cpu = (double)(clock() - c0) / CLOCKS_PER_SEC, wall = wall_now() - w0;
-    printf("RESULT mode=%s dim=%d n=%zu kappa=%g cpu_s=%.6f wall_s=%.6f simplices=%zu\n", mode,
-           dim, n, kappa, cpu, wall, count);
+    printf("RESULT mode=%s dim=%d n=%zu kappa=%g cpu_s=%.6f wall_s=%.6f simplices=%zu\n", mode, dim,
+           n, kappa, cpu, wall, count);
     free(p);
     return 0;
 }

@@ -114,9 +114,8 @@ static int check_triangle(const graph_grid *g, const fl_gamma_params *p, double 
     return graph_builder_add(b, t, v.c0, v.c1);
 }
 
-fl_status gamma_lens_triangles(const double *xyz, size_t n, const fl_gamma_params *p,
-                               double kappa, const fl_graph_options *opt, graph_builder *b,
-                               fl_error *err)
+fl_status gamma_lens_triangles(const double *xyz, size_t n, const fl_gamma_params *p, double kappa,
+                               const fl_graph_options *opt, graph_builder *b, fl_error *err)
 {
     fl_progress_fn progress = opt ? opt->progress : NULL;
     void *user = opt ? opt->progress_user : NULL;

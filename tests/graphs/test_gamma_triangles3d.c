@@ -14,16 +14,16 @@ static const regime regimes[] = {
     {1, {-1, 1, -0.5, -1e-300}}, /* the non-Delaunay part alone */
     {1, {-1, 1, -0.1, -1e-300}},
     {1, {-1, 1, -0.9, -1e-300}},
-    {1, {-1, 1, -0.3, 1}},      /* Delaunay part and non-Delaunay part together */
-    {1, {-1, 0, -0.6, -0.1}},   /* c0' <= 0: centres on opposite sides of the plane */
-    {1, {0, 1, -0.7, -0.05}},   /* c0' >= 0: both centres on one side */
+    {1, {-1, 1, -0.3, 1}},    /* Delaunay part and non-Delaunay part together */
+    {1, {-1, 0, -0.6, -0.1}}, /* c0' <= 0: centres on opposite sides of the plane */
+    {1, {0, 1, -0.7, -0.05}}, /* c0' >= 0: both centres on one side */
     {1, {-0.25, 0.25, -0.25, 0}},
-    {1, {-1, 1, -0.99, -0.9}},  /* only deep lenses */
-    {0, {-0.3, -0.3}},          /* lens of two equal balls (Lemma 3.2) */
+    {1, {-1, 1, -0.99, -0.9}}, /* only deep lenses */
+    {0, {-0.3, -0.3}},         /* lens of two equal balls (Lemma 3.2) */
     {0, {0, -0.25}},
     {0, {0.2, -0.5}},
     {0, {-0.5, -0.9}},
-    {1, {-1, 1, -1, 0}},        /* kappa = 1: brute force on both sides */
+    {1, {-1, 1, -1, 0}}, /* kappa = 1: brute force on both sides */
 };
 
 static int compare_methods(const double *p, size_t n, const regime *r)

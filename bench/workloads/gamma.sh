@@ -59,12 +59,12 @@ report_dim() {
     if [ -z "$t" ]; then t=$(at "$n" "$fb"); note="extrapolated"; fi
     c=$(count_at "$n" "$fast")
     bt=$(at "$n" "$bb")
-    printf 'ROW|gamma%sd-c1neg-%s|%s|our brute force (Thm 3.1), extrapolated|%s|%s|kappa=%s; ours %s (fit N^%s over N=%s), %s simplices; brute force fit N^%s over N=%s\n' \
+    printf 'ROW|gamma%sd-c1neg-%s|%s|our brute force (Thm 3.1), extrapolated|%s|%s|CPU s, kappa=%s; ours %s (fit N^%s over N=%s), %s simplices; brute force fit N^%s over N=%s\n' \
       "$dim" "$n" "$t" "$bt" "$(awk -v o="$t" -v p="$bt" 'BEGIN {printf "%.2g", o / p}')" \
       "$KAPPA" "$note" "${fb% *}" "$(awk '{print $1}' <<<"$fast" | paste -sd,)" "${c:-?}" \
       "${bb% *}" "$(awk '{print $1}' <<<"$brute" | paste -sd,)"
     dt=$(run dt "$dim" "$n") || { echo "ERROR|gamma${dim}d-dt-$n|Delaunay failed"; continue; }
-    printf 'ROW|gamma%sd-c1neg-%s-vs-dt|%s|our Delaunay (fl_dt%s_build)|%s|%s|kappa=%s; ours %s; %s Delaunay cells\n' \
+    printf 'ROW|gamma%sd-c1neg-%s-vs-dt|%s|our Delaunay (fl_dt%s_build)|%s|%s|CPU s, kappa=%s; ours %s; %s Delaunay cells\n' \
       "$dim" "$n" "$t" "$dim" "${dt% *}" "$(awk -v o="$t" -v p="${dt% *}" 'BEGIN {printf "%.3g", o / p}')" \
       "$KAPPA" "$note" "${dt#* }"
   done

@@ -80,6 +80,7 @@ static fl_status non_delaunay_part(const double *coords, size_t n, int dim,
 {
     double kappa = -c1_floor(p);
     if (dim == 2 && kappa < 1) return gamma_lens_edges(coords, n, p, kappa, opt, b, err);
+    if (dim == 3 && kappa < 1) return gamma_lens_triangles(coords, n, p, kappa, opt, b, err);
     return gamma_brute_force(coords, n, dim, p, GAMMA_NON_DELAUNAY_PART, opt, b, err);
 }
 

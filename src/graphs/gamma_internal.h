@@ -134,6 +134,12 @@ fl_status gamma_delaunay_part(const double *coords, size_t n, int dim, const fl_
 fl_status gamma_lens_edges(const double *xy, size_t n, const fl_gamma_params *p, double kappa,
                            const fl_graph_options *opt, graph_builder *b, fl_error *err);
 
+/* The non-Delaunay triangles (c1' < 0) of a 3D γ-graph whose parameters require c1' >= -kappa,
+ * kappa < 1: Theorem 3.1's enumeration with each triangle's scan stopped once it is decided
+ * (see gamma_triangles.c). */
+fl_status gamma_lens_triangles(const double *xyz, size_t n, const fl_gamma_params *p, double kappa,
+                               const fl_graph_options *opt, graph_builder *b, fl_error *err);
+
 /* ---- a uniform bucket grid for range queries (graph_grid.c) ---- */
 
 typedef struct graph_grid {

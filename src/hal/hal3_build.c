@@ -653,7 +653,7 @@ fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3
     if (st == FL_OK && (!b.cur || !b.next || !b.count))
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3: out of memory");
     if (st == FL_OK) {
-        uint32_t r[3];
+        uint32_t r[3] = {0, 0, 0}; /* set by choose_root on success; zeroed for -O2 analysis */
         hal3_piece pa, pb;
         memset(&pa, 0, sizeof pa);
         memset(&pb, 0, sizeof pb);

@@ -115,39 +115,6 @@ static void step_reconstruct(pipeline *pl, state2 *s)
     pl_step_end(pl, line);
 }
 
-/* The flintstones of the polylines a level-`level` approximation cuts off (nodes one level
- * deeper), over the original polygon and the approximation. */
-static fl_status hal_picture(const pipeline *pl, const fl_hal2 *hal, const fl_polygon *approx,
-                             uint32_t level, const char *file, fl_error *err)
-{
-    fl_svg *svg;
-    fl_status st = fl_svg_new(900, &svg, err);
-    if (st) return st;
-    fl_svg_style stone = {"#b35806", "#fdb863", 1, 0.35, 0};
-    const double *xy = hal->polygon.xy;
-    for (size_t i = 0; i < hal->node_count && st == FL_OK; i++) {
-        const fl_hal2_node *nd = &hal->nodes[i];
-        if (nd->level != level + 1) continue;
-        double d0[3] = {nd->disc[0][0], nd->disc[0][1], sqrt(nd->disc[0][2])};
-        double d1[3] = {nd->disc[1][0], nd->disc[1][1], sqrt(nd->disc[1][2])};
-        if (nd->kind == FL_HAL2_TWO_DISCS)
-            st = fl_svg_add_lens(svg, d0, d1, &stone, err);
-        else if (nd->kind == FL_HAL2_DISC_HALFPLANE)
-            st = fl_svg_add_disc_halfplane(svg, d0, xy + 2 * nd->p, xy + 2 * nd->s, nd->side,
-                                           &stone, err);
-        else if (nd->kind == FL_HAL2_DISC)
-            st = fl_svg_add_disc(svg, d0[0], d0[1], d0[2], &stone, err);
-    }
-    fl_svg_style original = {"#5a5a5a", "none", 1, 0, 0}, cut = {"#1f4e79", "none", 2.5, 0, 0};
-    if (st == FL_OK) st = fl_svg_add_polygon(svg, &hal->polygon, &original, err);
-    if (st == FL_OK) st = fl_svg_add_polygon(svg, approx, &cut, err);
-    char path[1024];
-    pl_path(pl, path, sizeof path, file);
-    if (st == FL_OK) st = fl_svg_write(svg, path, err);
-    fl_svg_free(svg);
-    return st;
-}
-
 /* Three approximation levels spread over the tree's depth: coarse, middle, fine. */
 static void step_hal(pipeline *pl, state2 *s)
 {
@@ -189,7 +156,10 @@ static void step_hal(pipeline *pl, state2 *s)
         snprintf(lf, sizeof lf, "%s-hal-%u.xy", s->name, levels[k]);
         pl_path(pl, lp, sizeof lp, lf);
         if (st == FL_OK) st = fl_write_polygon(lp, &approx, &err);
-        if (st == FL_OK && k == 1) st = hal_picture(pl, &hal, &approx, levels[k], file, &err);
+        char pic[1024];
+        pl_path(pl, pic, sizeof pic, file);
+        if (st == FL_OK && k == 1)
+            st = cli_write_hal2_svg(pic, &hal, &approx, 1, levels[k], 0, &err);
         if (st == FL_OK) {
             cli_json_open_object(pl->json, NULL);
             cli_json_uint(pl->json, "level", levels[k]);

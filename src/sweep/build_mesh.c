@@ -8,6 +8,7 @@
  * priority process of §3.2 runs on it unchanged. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/core.h"
 #include "sweep/sweep_internal.h"
@@ -401,6 +402,14 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
             }
         }
         st = split_ranges(s, mesh, perm, centroid, opt, err);
+    }
+    if (st == FL_OK) { /* the topology, for fl_sweep_update_vertices */
+        s->tri = fl_alloc_array(n, 3 * sizeof *s->tri);
+        s->vertex_count = mesh->vertex_count;
+        if (s->tri)
+            memcpy(s->tri, mesh->tri, 3 * n * sizeof *s->tri);
+        else
+            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
     }
     free(perm);
     free(centroid);

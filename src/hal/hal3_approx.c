@@ -172,22 +172,31 @@ static int has_segment(const closure *c, uint32_t a, uint32_t b)
     return 0;
 }
 
-/* Fills one simple crack loop w[0..k-1] by a fan from the first apex whose diagonals are new
- * segments (so no side gets a third triangle). 1 done, 0 no such apex, -1 out of memory. */
+/* Triangulates one simple crack loop w[0..k-1] against its orientation, splitting it along a
+ * diagonal that is a new segment (so no side gets a third triangle), preferring the most
+ * balanced split. 1 done, 0 no such diagonal, -1 out of memory. */
 static int fill_loop(closure *c, const uint32_t *w, size_t k)
 {
     if (k < 3) return 0;
-    for (size_t r = 0; r < k; r++) {
-        size_t i = 2;
-        while (i + 1 < k && !has_segment(c, w[r], w[(r + i) % k]))
-            i++;
-        if (i + 1 < k) continue;
-        for (i = 1; i + 1 < k; i++) {
-            uint32_t t[3] = {w[r], w[(r + i + 1) % k], w[(r + i) % k]};
-            if (fl_vec_push(&c->fill, t, 3)) return -1;
-        }
-        return 1;
+    if (k == 3) {
+        uint32_t t[3] = {w[0], w[2], w[1]};
+        return fl_vec_push(&c->fill, t, 3) ? -1 : 1;
     }
+    for (size_t d = k / 2; d >= 2; d--)
+        for (size_t i = 0; i < k; i++) {
+            size_t j = (i + d) % k;
+            if (has_segment(c, w[i], w[j])) continue;
+            uint32_t *tmp = fl_alloc_array(k + 1, sizeof(uint32_t));
+            if (!tmp) return -1;
+            for (size_t q = 0; q <= d; q++)
+                tmp[q] = w[(i + q) % k];
+            int ok = fill_loop(c, tmp, d + 1);
+            for (size_t q = 0; ok > 0 && q <= k - d; q++)
+                tmp[q] = w[(j + q) % k];
+            if (ok > 0) ok = fill_loop(c, tmp, k - d + 1);
+            free(tmp);
+            return ok;
+        }
     return 0;
 }
 
@@ -206,7 +215,7 @@ static int fill_cracks(closure *c, size_t nopen)
     for (size_t s = 0; s < nopen; s++) {
         if (c->used[s]) continue;
         uint32_t start = (uint32_t)(c->open[s] >> 32);
-        size_t e = s, len = 0, fill0 = c->fill.count;
+        size_t e = s, len = 0;
         int ok = 1;
         for (;;) {
             c->used[e] = 1;
@@ -228,27 +237,37 @@ static int fill_cracks(closure *c, size_t nopen)
             }
             e = lo;
         }
-        /* Split the closed walk at repeated vertices into simple loops. */
-        size_t top = 0;
-        for (size_t i = 0; i < len && ok > 0; i++) {
-            size_t j = top;
-            while (j > 0 && c->cyc[len + j - 1] != c->cyc[i])
-                j--;
-            if (j > 0) {
-                ok = fill_loop(c, c->cyc + len + j - 1, top - j + 1);
-                top = j;
-            } else {
-                c->cyc[len + top++] = c->cyc[i];
-            }
-        }
-        if (ok > 0) ok = fill_loop(c, c->cyc + len, top);
-        if (ok < 0) return -1;
-        if (ok == 0) {
-            /* This crack stays: its nodes are refined (closure_round's second pass). */
-            c->fill.count = fill0;
+        /* Split the closed walk at repeated vertices into simple loops; cyc[len..] is the
+         * stack of vertices, walk[len..] the open side leaving each. A loop that cannot be
+         * filled stays a crack: its nodes are refined (closure_round's second pass). */
+        if (!ok) {
             for (size_t i = 0; i < len; i++)
                 c->used[c->walk[i]] = 2;
             failed = 1;
+            continue;
+        }
+        size_t top = 0;
+        for (size_t i = 0; i <= len; i++) {
+            uint32_t v = i < len ? c->cyc[i] : c->cyc[0];
+            size_t j = top;
+            while (j > 0 && c->cyc[len + j - 1] != v)
+                j--;
+            if (j == 0) {
+                c->cyc[len + top] = v;
+                c->walk[len + top++] = c->walk[i];
+                continue;
+            }
+            size_t fill0 = c->fill.count;
+            int r = fill_loop(c, c->cyc + len + j - 1, top - j + 1);
+            if (r < 0) return -1;
+            if (r == 0) {
+                c->fill.count = fill0;
+                for (size_t q = j - 1; q < top; q++)
+                    c->used[c->walk[len + q]] = 2;
+                failed = 1;
+            }
+            top = j;
+            if (i < len) c->walk[len + top - 1] = c->walk[i];
         }
     }
     if (failed) return 0;
@@ -417,7 +436,7 @@ static fl_status close_cut(const fl_hal3 *hal, const cut_rule *r, uint8_t *keep,
     c.open = fl_alloc_array(3 * nn + 1, sizeof(uint64_t));
     c.cyc = fl_alloc_array(6 * nn + 1, sizeof(uint32_t));
     c.used = fl_alloc_array(3 * nn + 1, 1);
-    c.walk = fl_alloc_array(3 * nn + 1, sizeof(uint32_t));
+    c.walk = fl_alloc_array(6 * nn + 1, sizeof(uint32_t));
     c.pinch = fl_calloc_array(hal->mesh.vertex_count + 1, 1);
     fl_status st = FL_OK;
     if (!c.orig || !c.leaf_of || !c.cut || !c.todo || !c.open || !c.cyc || !c.used || !c.walk ||

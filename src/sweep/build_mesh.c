@@ -156,6 +156,17 @@ static void enclosing_triangle(const double *uv, size_t n, const double *lo, con
                 tri[c][ay] = flip[o] * (corner[c][1] + y0[o]);
             }
         }
+    if (best < INFINITY) return;
+    /* Every candidate overflowed or was NaN: a spread so thin in one direction that 2h/w is
+     * infinite or zero (found by fuzz_sweep: widths 1e-291 against 8, which left the triangle
+     * unset). The 45-degree triangle on the box encloses it with finite corners. */
+    double w = hi[0] - lo[0], h = hi[1] - lo[1];
+    tri[0][0] = lo[0] - h;
+    tri[0][1] = lo[1];
+    tri[1][0] = hi[0] + h;
+    tri[1][1] = lo[1];
+    tri[2][0] = lo[0] + w / 2;
+    tri[2][1] = lo[1] + h + w / 2;
 }
 
 /* Squared distance from p to the triangle v[0..8], with a fast path for the common case of a

@@ -1,0 +1,90 @@
+/* Regressions for what the round-3 fuzz targets (fuzz_hausdorff, fuzz_smooth, fuzz_hal3,
+ * fuzz_skin, fuzz_render) found. Each case is the minimized finding; the answer is checked
+ * against an independent method (long-double brute-force distances, tests/sweep/sweep_oracle.h). */
+#include "degen.h"
+#include "sweep/sweep_oracle.h"
+
+static ld brute_mesh_distance(const fl_mesh *m, const double *p)
+{
+    ld best = INFINITY;
+    for (size_t t = 0; t < m->triangle_count; t++) {
+        ld d = oracle_mesh_element(m->xyz, m->tri, t, p);
+        if (d < best) best = d;
+    }
+    return best;
+}
+
+/* fuzz_hausdorff: with keep_field, a vertex that no triangle uses stayed a placeholder sample at
+ * (0, 0, 0) with distance 0 in the field, although the field promises every vertex's distance. */
+static void test_hausdorff_field_measures_unused_vertices(void)
+{
+    double av[] = {10, 20, 30, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+    uint32_t at[] = {1, 2, 3};
+    double bv[] = {0, 0, 1, 1, 0, 1, 0, 1, 1};
+    uint32_t bt[] = {0, 1, 2};
+    fl_mesh a = {4, av, 1, at}, b = {3, bv, 1, bt};
+    fl_hausdorff_options o = {0};
+    o.keep_field = 1;
+    fl_hausdorff_result r;
+    fl_error err;
+    CHECK_STATUS(fl_hausdorff_meshes(&a, &b, &o, &r, &err), FL_OK, &err);
+    /* the unused vertex takes no part in the distance: h(A,B) = 1 (the triangles are 1 apart) */
+    CHECK_NEAR(r.h_ab[0], 1.0, 1e-9);
+    CHECK(r.field_ab.mesh.vertex_count >= 4);
+    for (size_t i = 0; i < r.field_ab.mesh.vertex_count; i++) {
+        const double *p = r.field_ab.mesh.xyz + 3 * i;
+        ld d = brute_mesh_distance(&b, p);
+        CHECK_MSG(fabsl((ld)r.field_ab.distance[i] - d) <= 1e-12L * (1 + d),
+                  "field vertex %zu (%g %g %g): %.17g, brute force %.17Lg", i, p[0], p[1], p[2],
+                  r.field_ab.distance[i], d);
+    }
+    CHECK(r.field_ab.mesh.xyz[0] == 10 && r.field_ab.mesh.xyz[1] == 20);
+    fl_hausdorff_result_free(&r);
+}
+
+/* fuzz_hausdorff: the sweep's point-triangle distance overflowed (4th powers of the
+ * coordinates) for triangles with edges beyond ~1e77 and underflowed below ~1e-77, so every
+ * such triangle fell back to its edges: from (0, 1, 0) s to the triangle 0, (0, 1, 1) s,
+ * (1, 1, 0) s it answered s / sqrt(2) instead of s / sqrt(3). */
+static void test_sweep_face_distance_at_extreme_scales(void)
+{
+    static const double scales[] = {1e150, 1e100, 1e80, 1.0, 1e-80, 1e-100};
+    for (size_t k = 0; k < sizeof scales / sizeof *scales; k++) {
+        double s = scales[k];
+        double v[] = {0, 0, 0, 0, s, s, s, s, 0};
+        uint32_t t[] = {0, 1, 2};
+        fl_mesh m = {3, v, 1, t};
+        fl_sweep *sw = NULL;
+        fl_error err;
+        CHECK_STATUS(fl_sweep_build(&m, NULL, &sw, &err), FL_OK, &err);
+        if (!sw) continue;
+        double q[] = {0, s, 0, s / 4, s / 2, -s, 0.3 * s, 0.9 * s, 0.1 * s};
+        for (int i = 0; i < 3; i++) {
+            fl_closest r;
+            CHECK_STATUS(fl_sweep_closest(sw, q + 3 * i, 1, 0, &r, &err), FL_OK, &err);
+            ld d = brute_mesh_distance(&m, q + 3 * i);
+            CHECK_MSG(fabsl((ld)r.distance - d) <= 1e-12L * d,
+                      "scale %g, query %d: %.17g, brute force %.17Lg", s, i, r.distance, d);
+        }
+        CHECK_NEAR(brute_mesh_distance(&m, q) / s, 1 / sqrt(3.0), 1e-12);
+        fl_sweep_free(sw);
+        /* the same through the Hausdorff distance of the triangle and a point-like triangle */
+        double pv[] = {0, s, 0, 0, s, 0, 0, s, 0};
+        fl_mesh pm = {3, pv, 1, t};
+        fl_hausdorff_result hr;
+        CHECK_STATUS(fl_hausdorff_meshes(&pm, &m, NULL, &hr, &err), FL_OK, &err);
+        CHECK_MSG(hr.h_ab[0] <= s / sqrt(3.0) * (1 + 1e-9) && hr.h_ab[1] >= s / sqrt(3.0) * (1 - 1e-9),
+                  "scale %g: h(point, triangle) in [%.17g, %.17g], true %.17g", s, hr.h_ab[0],
+                  hr.h_ab[1], s / sqrt(3.0));
+        fl_hausdorff_result_free(&hr);
+    }
+}
+
+int main(void)
+{
+    fl_test_case cases[] = {
+        FL_TEST_CASE(test_hausdorff_field_measures_unused_vertices),
+        FL_TEST_CASE(test_sweep_face_distance_at_extreme_scales),
+    };
+    return fl_test_run(cases, sizeof cases / sizeof *cases);
+}

@@ -80,11 +80,34 @@ static void test_sweep_face_distance_at_extreme_scales(void)
     }
 }
 
+/* fuzz_hausdorff: the quadratic bound of a piece summed (a_i - mu)^2 / 2K, whose square
+ * underflowed for lengths near 1e-117: a segment of B between two points lying on A got the
+ * upper bound 0 (printed 1.6e-124) while its midpoint is s/2 from A. */
+static void test_hausdorff_bound_at_1e_117(void)
+{
+    static const double scales[] = {1.1725540106225486e-117, 1e-100, 1.0, 1e100};
+    for (size_t k = 0; k < sizeof scales / sizeof *scales; k++) {
+        double s = scales[k];
+        double a[] = {0, 0, 0, -s, -s, -s}, b[] = {-s, -s, 0, 0};
+        fl_hausdorff_result r;
+        fl_error err;
+        fl_hausdorff_options o = {0};
+        o.both_directions = 1;
+        CHECK_STATUS(fl_hausdorff_polylines(a, 3, 0, b, 2, 0, 2, &o, &r, &err), FL_OK, &err);
+        /* on b, (-ts, -ts) is min(ts, s - ts) from a: h(b, a) = s / 2 at t = 1/2 */
+        CHECK_MSG(r.h_ba[0] <= s / 2 * (1 + 1e-9) && r.h_ba[1] >= s / 2 * (1 - 1e-9),
+                  "scale %g: h(b, a) in [%.17g, %.17g], true %.17g", s, r.h_ba[0], r.h_ba[1],
+                  s / 2);
+        fl_hausdorff_result_free(&r);
+    }
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
         FL_TEST_CASE(test_hausdorff_field_measures_unused_vertices),
         FL_TEST_CASE(test_sweep_face_distance_at_extreme_scales),
+        FL_TEST_CASE(test_hausdorff_bound_at_1e_117),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

@@ -77,7 +77,7 @@ static int h3_brute_inside(const fl_mesh *m, const double *x, double far)
 static int h3_mesh_bad(const fl_mesh *m)
 {
     for (size_t i = 0; i < 3 * m->vertex_count; i++)
-        if (!isfinite(m->xyz[i])) return 1;
+        if (!(fabs(m->xyz[i]) <= 1e150)) return 1; /* NaN/Inf or beyond the documented range */
     fl_mesh_check_options co = {.skip_self_intersections = 1};
     fl_mesh_report rep;
     fl_error err;

@@ -36,6 +36,8 @@ static void sm_curve(fz_in *in, uint8_t head)
         size_t k = fz_byte(in) % 9;
         if (k < 3) bad = 1;
         if (fz_coords(in, xy + 2 * n, 2 * k)) bad = 1;
+        for (size_t i = 0; i < 2 * k; i++) /* the documented range */
+            if (fabs(xy[2 * n + i]) > 1e150) bad = 1;
         for (size_t i = 0; i < k; i++) {
             const double *a = xy + 2 * (n + (i + k - 1) % k), *v = xy + 2 * (n + i),
                          *b = xy + 2 * (n + (i + 1) % k);
@@ -92,7 +94,7 @@ static void sm_curve(fz_in *in, uint8_t head)
 static int sm_mesh_bad(const fl_mesh *m)
 {
     for (size_t i = 0; i < 3 * m->vertex_count; i++)
-        if (!isfinite(m->xyz[i])) return 1;
+        if (!(fabs(m->xyz[i]) <= 1e150)) return 1; /* NaN/Inf or beyond the documented range */
     fl_mesh_check_options co = {.skip_self_intersections = 1};
     fl_mesh_report rep;
     fl_error err;
@@ -138,7 +140,8 @@ static void sm_surface(fz_in *in, uint8_t head)
     for (size_t i = 0; i < nv; i++) {
         const double *nr = s.normal + 3 * i;
         FZ_ASSERT(fabs(sqrt(nr[0] * nr[0] + nr[1] * nr[1] + nr[2] * nr[2]) - 1) <= 1e-9,
-                  "normal %zu not unit", i);
+                  "normal %zu not unit: %.17g %.17g %.17g (mesh scale %g)", i, nr[0], nr[1], nr[2],
+                  scale);
     }
     /* Corner b300 / b030 / b003 of every patch is its corner node; for a mesh vertex it must be
      * the vertex, and the adjacent control points (b210, b201 at corner 0) lie in the tangent

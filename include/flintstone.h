@@ -1415,7 +1415,7 @@ typedef struct fl_g1_curve {
 } fl_g1_curve;
 
 /* Builds the G1 curve of every ring of `polygon` (each ring at least 3 vertices, finite
- * coordinates, no two consecutive vertices equal, no ring turning back on itself by 180
+ * coordinates with |x| <= 1e150, no two consecutive vertices equal, no ring turning back on itself by 180
  * degrees at a vertex). FL_ERR_INPUT otherwise, FL_ERR_USAGE for bad options, FL_ERR_NOMEM.
  * On failure *out is zeroed. Free with fl_g1_curve_free. */
 fl_status fl_g1_curve_build(const fl_polygon *polygon, const fl_g1_curve_options *opt,
@@ -1483,8 +1483,8 @@ typedef struct fl_g1_surface {
                                  * thesis's cubic curve (docs/smooth.md) */
 } fl_g1_surface;
 
-/* Builds the surface over a closed, manifold, oriented mesh (fl_mesh_check; else FL_ERR_INPUT
- * naming what is wrong), interpolating its vertices and estimated normals. O(V + T log T).
+/* Builds the surface over a closed, manifold, oriented mesh with coordinates |x| <= 1e150
+ * (fl_mesh_check; else FL_ERR_INPUT naming what is wrong), interpolating its vertices and estimated normals. O(V + T log T).
  * FL_ERR_USAGE for bad options, FL_ERR_NOMEM. On failure *out is zeroed. */
 fl_status fl_g1_surface_build(const fl_mesh *mesh, const fl_g1_surface_options *opt,
                               fl_g1_surface *out, fl_error *err);
@@ -1599,8 +1599,8 @@ typedef struct fl_hal3_options {
 /* Builds the flintstone tree of a closed triangle mesh (Algorithm 7.2). `opt` may be NULL.
  * The mesh must be closed, manifold, oriented, connected, of genus 0, without degenerate
  * triangles; otherwise FL_ERR_INPUT names the problem (e.g. "genus 1: the HAL tree needs a
- * sphere-like surface"). Also FL_ERR_INPUT for NaN/Inf coordinates, FL_ERR_USAGE for NULL
- * arguments or a threshold outside [0, pi/3], FL_ERR_ALGORITHM when cancelled or when the
+ * sphere-like surface"). Also FL_ERR_INPUT for NaN/Inf coordinates or |x| > 1e150,
+ * FL_ERR_USAGE for NULL arguments or a threshold outside [0, pi/3], FL_ERR_ALGORITHM when cancelled or when the
  * refinement cannot proceed (the message says where), FL_ERR_NOMEM. On failure *out is zeroed.
  * Free with fl_hal3_free. */
 fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3 *out,

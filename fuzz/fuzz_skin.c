@@ -98,7 +98,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
               rep.boundary_edges, rep.nonmanifold_edges, rep.nonmanifold_vertices,
               rep.misoriented_edges);
     /* The floating-point volume underflows / overflows at extreme scales. */
-    FZ_ASSERT(rep.volume > 0 || !(ext > 1e-90 && ext < 1e90), "skin mesh not outward (volume %.3g)", rep.volume);
+    FZ_ASSERT(rep.volume > 0 || !(ext > 1e-90 && ext < 1e90), "skin mesh not outward (volume %.3g)",
+              rep.volume);
     fl_mesh_report_free(&rep);
     fl_mesh_free(&m);
     return 0;

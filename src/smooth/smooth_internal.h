@@ -26,6 +26,15 @@ static inline void g1_cross(const double *a, const double *b, double *r)
 }
 
 /* Scales v to unit length; returns its former length. */
+/* |v| without overflow or underflow of |v|^2 (components of 1e-150 or 1e150 are in range). */
+static inline double g1_length(const double *v)
+{
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(m > 0) || isinf(m)) return m;
+    double s[3] = {v[0] / m, v[1] / m, v[2] / m};
+    return m * sqrt(g1_dot(s, s));
+}
+
 static inline double g1_normalize(double *v)
 {
     /* Divide by the largest component first: |v|^2 overflowed to inf for components beyond

@@ -73,7 +73,8 @@ static void test_sweep_face_distance_at_extreme_scales(void)
         fl_mesh pm = {3, pv, 1, t};
         fl_hausdorff_result hr;
         CHECK_STATUS(fl_hausdorff_meshes(&pm, &m, NULL, &hr, &err), FL_OK, &err);
-        CHECK_MSG(hr.h_ab[0] <= s / sqrt(3.0) * (1 + 1e-9) && hr.h_ab[1] >= s / sqrt(3.0) * (1 - 1e-9),
+        double truth = s / sqrt(3.0);
+        CHECK_MSG(hr.h_ab[0] <= truth * (1 + 1e-9) && hr.h_ab[1] >= truth * (1 - 1e-9),
                   "scale %g: h(point, triangle) in [%.17g, %.17g], true %.17g", s, hr.h_ab[0],
                   hr.h_ab[1], s / sqrt(3.0));
         fl_hausdorff_result_free(&hr);
@@ -102,12 +103,96 @@ static void test_hausdorff_bound_at_1e_117(void)
     }
 }
 
+/* fuzz_smooth: at a turn of 180 degrees minus a rounding error (the neighbours of v 1e-208
+ * apart) the weighted tangent sum cancelled exactly and the tangent and two control points
+ * were NaN. The curve must interpolate with finite control points. */
+static void test_g1_curve_near_spike_is_finite(void)
+{
+    double xy[] = {0, 0, 6, -3.375, -7.6592162721380899e-208, 0, 0, 6};
+    size_t rs[] = {0, 4}, ps[] = {0, 1};
+    fl_polygon p = {4, xy, 1, rs, 1, ps};
+    for (int w = 0; w <= FL_G1_WEIGHT_INVERSE; w++) {
+        fl_g1_curve_options o = {w, 0};
+        fl_g1_curve c;
+        fl_error err;
+        CHECK_STATUS(fl_g1_curve_build(&p, &o, &c, &err), FL_OK, &err);
+        if (!c.ctrl) continue;
+        for (size_t i = 0; i < 4; i++) {
+            for (int k = 0; k < 8; k++)
+                CHECK_MSG(isfinite(c.ctrl[8 * i + k]), "weighting %d: segment %zu", w, i);
+            CHECK_NEAR(hypot(c.tangent[2 * i], c.tangent[2 * i + 1]), 1.0, 1e-12);
+            CHECK(c.ctrl[8 * i] == xy[2 * i] && c.ctrl[8 * i + 1] == xy[2 * i + 1]);
+        }
+        fl_g1_curve_free(&c);
+    }
+}
+
+/* fuzz_smooth: vertex normals of a mesh at 1e150 came out as the zero vector (|n|^2 overflowed
+ * and n / inf = 0 passed as normalized); a mesh at 1e306 gave inf control points and is now
+ * outside the documented range. */
+static void test_g1_surface_extreme_scales(void)
+{
+    static const uint32_t tri[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    static const double scales[] = {1e150, 1e-150, 1.0};
+    for (size_t k = 0; k < 3; k++) {
+        double s = scales[k], v[] = {0, 0, 0, s, 0, 0, 0, s, 0, 0, 0, s};
+        fl_mesh m = {4, v, 4, (uint32_t *)tri};
+        fl_g1_surface g;
+        fl_error err;
+        CHECK_STATUS(fl_g1_surface_build(&m, NULL, &g, &err), FL_OK, &err);
+        if (!g.normal) continue;
+        for (size_t i = 0; i < 4; i++) {
+            const double *n = g.normal + 3 * i;
+            CHECK_MSG(fabs(sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) - 1) <= 1e-12,
+                      "scale %g: normal %zu = (%g, %g, %g)", s, i, n[0], n[1], n[2]);
+        }
+        for (size_t i = 0; i < 30 * g.patch_count; i++) CHECK(isfinite(g.ctrl[i]));
+        fl_g1_surface_free(&g);
+    }
+    double big[] = {0, 0, 0, 6.25e306, 0, 0, 0, 1, 0, 0, 0, 1};
+    fl_mesh bm = {4, big, 4, (uint32_t *)tri};
+    fl_g1_surface g;
+    fl_error err;
+    CHECK_FAILS(fl_g1_surface_build(&bm, NULL, &g, &err), &err, FL_ERR_INPUT, "1e150");
+}
+
+/* fuzz_hal3: a tetrahedron with one vertex at 6.25e298: the squared ball radii overflowed and
+ * node 1's flintstone excluded the centroid of its own triangle. Now outside the documented
+ * range; at 1e150 the flintstones still contain their triangles. */
+static void test_hal3_extreme_scale(void)
+{
+    static const uint32_t tri[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    double big[] = {-0.5, -0.5, -0.5, -0.5, -0.5, -0.5, 6.25e298, -0.5, -0.5, -0.5, -0.5, -0.5};
+    big[3] = 4, big[7] = 4, big[11] = 4;
+    fl_mesh bm = {4, big, 4, (uint32_t *)tri};
+    fl_hal3 h;
+    fl_error err;
+    CHECK_FAILS(fl_hal3_build(&bm, NULL, &h, &err), &err, FL_ERR_INPUT, "1e150");
+    double s = 1e150, v[] = {0, 0, 0, s, 0, 0, 0, s, 0, 0, 0, s};
+    fl_mesh m = {4, v, 4, (uint32_t *)tri};
+    CHECK_STATUS(fl_hal3_build(&m, NULL, &h, &err), FL_OK, &err);
+    for (size_t n = 0; n < h.node_count; n++) {
+        if (h.nodes[n].kind != FL_HAL3_LEAF) continue;
+        const uint32_t *t = tri + 3 * h.nodes[n].face;
+        double g[3];
+        for (int x = 0; x < 3; x++)
+            g[x] = v[3 * t[0] + x] / 3 + v[3 * t[1] + x] / 3 + v[3 * t[2] + x] / 3;
+        for (int32_t a = (int32_t)n; a >= 0; a = h.nodes[a].parent)
+            CHECK_MSG(fl_hal3_flintstone_may_contain(&h, (uint32_t)a, g),
+                      "node %d excludes the centroid of face %u", (int)a, h.nodes[n].face);
+    }
+    fl_hal3_free(&h);
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
         FL_TEST_CASE(test_hausdorff_field_measures_unused_vertices),
         FL_TEST_CASE(test_sweep_face_distance_at_extreme_scales),
         FL_TEST_CASE(test_hausdorff_bound_at_1e_117),
+        FL_TEST_CASE(test_g1_curve_near_spike_is_finite),
+        FL_TEST_CASE(test_g1_surface_extreme_scales),
+        FL_TEST_CASE(test_hal3_extreme_scale),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

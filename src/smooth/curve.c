@@ -31,17 +31,22 @@ static void estimate_tangent(const double *a, const double *v, const double *b, 
 {
     double d0[2] = {v[0] - a[0], v[1] - a[1]}, d1[2] = {b[0] - v[0], b[1] - v[1]};
     double l0 = hypot(d0[0], d0[1]), l1 = hypot(d1[0], d1[1]);
-    double w0 = 1, w1 = 1;
+    /* Divide, and scale the inverse weights by l0 l1: 1 / l and 1 / l^2 overflowed to inf for
+     * an edge of 2e-323 and the tangent became NaN (found by fuzz/fuzz_smooth.c). Only the
+     * direction of t matters. */
+    double u0[2] = {d0[0] / l0, d0[1] / l0}, u1[2] = {d1[0] / l1, d1[1] / l1};
     if (weighting == FL_G1_WEIGHT_UNIFORM) {
-        w0 = 1 / l0;
-        w1 = 1 / l1;
-    } else if (weighting == FL_G1_WEIGHT_INVERSE) {
-        w0 = 1 / (l0 * l0);
-        w1 = 1 / (l1 * l1);
+        t[0] = u0[0] + u1[0];
+        t[1] = u0[1] + u1[1];
+    } else if (weighting == FL_G1_WEIGHT_INVERSE) { /* u0 / l0 + u1 / l1, times l0 l1 */
+        t[0] = u0[0] * l1 + u1[0] * l0;
+        t[1] = u0[1] * l1 + u1[1] * l0;
+    } else {
+        t[0] = d0[0] + d1[0];
+        t[1] = d0[1] + d1[1];
     }
-    t[0] = w0 * d0[0] + w1 * d1[0];
-    t[1] = w0 * d0[1] + w1 * d1[1];
-    if (!(hypot(t[0], t[1]) > 0)) {
+    double tl = hypot(t[0], t[1]);
+    if (!(tl > 0 && isfinite(tl))) {
         /* A turn of 180 degrees minus a rounding error (a and b 1e-208 apart, 6 from v): the
          * weighted sum cancels to the zero vector and the tangent became NaN (found by
          * fuzz/fuzz_smooth.c). Take the perpendicular of the bisector e_a + e_b of the unit

@@ -108,11 +108,14 @@ static void test_hausdorff_bound_at_1e_117(void)
  * were NaN. The curve must interpolate with finite control points. */
 static void test_g1_curve_near_spike_is_finite(void)
 {
-    double xy[] = {0, 0, 6, -3.375, -7.6592162721380899e-208, 0, 0, 6};
+    /* second ring: an edge of 2e-323, whose uniform and inverse weights 1/l, 1/l^2 were inf */
+    double rings[2][8] = {{0, 0, 6, -3.375, -7.6592162721380899e-208, 0, 0, 6},
+                          {0, 4, 6, 2, 5.625, 5.875, 1.9762625833649862e-323, 4}};
     size_t rs[] = {0, 4}, ps[] = {0, 1};
-    fl_polygon p = {4, xy, 1, rs, 1, ps};
-    for (int w = 0; w <= FL_G1_WEIGHT_INVERSE; w++) {
-        fl_g1_curve_options o = {w, 0};
+    for (int w = 0; w < 8; w++) {
+        double *xy = rings[w / 4];
+        fl_polygon p = {4, xy, 1, rs, 1, ps};
+        fl_g1_curve_options o = {w % 4, 0};
         fl_g1_curve c;
         fl_error err;
         CHECK_STATUS(fl_g1_curve_build(&p, &o, &c, &err), FL_OK, &err);

@@ -205,6 +205,19 @@ uint32_t hal3_flintstone(hal3_work *w, fl_hal3_node *nd, const hal3_piece *pc)
         memcpy(nd->ball[1], cr, sizeof cr);
         nd->kind = uni ? FL_HAL3_BALL_UNION : FL_HAL3_TWO_BALLS;
     }
+    /* The circumcentre is a floating construction: for a corner triangle seen almost edge-on
+     * from v_q (one vertex 1e20 away) its denominator rounds to 0 and the centre came out NaN
+     * with radius max(0, NaN) = 0: a ball that every NaN comparison called "may contain", so
+     * it pruned nothing, and NaN widths (seen while checking a fuzz_hal3 report). Any finite
+     * centre is correct, since the radius is measured to every vertex: use their centroid. */
+    for (int j = 0; j < 2; j++) {
+        double *c = nd->ball[j];
+        if (isfinite(c[0]) && isfinite(c[1]) && isfinite(c[2])) continue;
+        c[0] = c[1] = c[2] = 0;
+        for (size_t i = 0; i < V.n; i++)
+            for (int k = 0; k < 3; k++)
+                c[k] += vx(m, V.v[i])[k] / (double)V.n;
+    }
     /* Radii: the largest squared distance to the vertices each ball must hold. */
     nd->ball[0][3] = nd->ball[1][3] = 0;
     for (size_t i = 0; i < V.n; i++) {

@@ -187,6 +187,32 @@ static void test_hal3_extreme_scale(void)
     fl_hal3_free(&h);
 }
 
+/* fuzz_hal3 (while checking a report): with a vertex 1e20 away the circumcentre's denominator
+ * rounded to 0 and the root's ball was NaN with squared radius 0, a flintstone that pruned
+ * nothing. Every ball must be finite and hold the corners of every triangle below it. */
+static void test_hal3_far_vertex_balls_finite(void)
+{
+    static const uint32_t tri[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    double v[] = {-0.5, -0.5, -0.5, 3.5078125, -0.5, -0.4609375, -0.5, 3.5, 1e20, -0.5, -0.5, 3.5};
+    fl_mesh m = {4, v, 4, (uint32_t *)tri};
+    fl_hal3 h;
+    fl_error err;
+    CHECK_STATUS(fl_hal3_build(&m, NULL, &h, &err), FL_OK, &err);
+    for (size_t n = 0; n < h.node_count; n++) {
+        const fl_hal3_node *nd = h.nodes + n;
+        int balls = nd->kind == FL_HAL3_TWO_BALLS || nd->kind == FL_HAL3_BALL_UNION ? 2 : 1;
+        for (int j = 0; j < balls; j++)
+            for (int k = 0; k < 4; k++)
+                CHECK_MSG(isfinite(nd->ball[j][k]), "node %zu ball %d not finite", n, j);
+        if (nd->kind != FL_HAL3_LEAF) continue;
+        for (int32_t a = (int32_t)n; a >= 0; a = h.nodes[a].parent)
+            for (int k = 0; k < 3; k++)
+                CHECK(fl_hal3_flintstone_may_contain(&h, (uint32_t)a,
+                                                     v + 3 * tri[3 * nd->face + k]));
+    }
+    fl_hal3_free(&h);
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
@@ -196,6 +222,7 @@ int main(void)
         FL_TEST_CASE(test_g1_curve_near_spike_is_finite),
         FL_TEST_CASE(test_g1_surface_extreme_scales),
         FL_TEST_CASE(test_hal3_extreme_scale),
+        FL_TEST_CASE(test_hal3_far_vertex_balls_finite),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

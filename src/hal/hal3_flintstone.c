@@ -62,21 +62,32 @@ static void circumcentre(const double *p, const double *s, const double *t, cons
         c[k] = p[k] + (la * bxd[k] + lb * dxa[k] + ld * axb[k]) / den;
 }
 
-/* Distance from x to the closed triangle abc (Ericson, Real-Time Collision Detection §5.1.5). */
+/* Distance from x to the closed triangle abc (Ericson, Real-Time Collision Detection §5.1.5).
+ * The region tests multiply dot products, i.e. 4th powers of the coordinates: at 1e100 they
+ * overflowed (inf / inf = NaN), the distance came out NaN and fmax dropped it, so a node's
+ * certified error was 0 with a vertex 1.75e100 away (found by fuzz/fuzz_hal3.c). The tests run
+ * on the differences scaled by a power of two (exact, and the tests are scale invariant); the
+ * closest point is built from the unscaled ones. */
 static double point_triangle_distance(const double *x, const double *a, const double *b,
                                       const double *c)
 {
     double ab[3], ac[3], ap[3], bp[3], cp[3], r[3];
-    sub(b, a, ab), sub(c, a, ac), sub(x, a, ap);
-    double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    sub(b, a, ab), sub(c, a, ac), sub(x, a, ap), sub(x, b, bp), sub(x, c, cp);
+    double mx = 0, f = 1, sab[3], sac[3], sap[3], sbp[3], scp[3];
+    for (int k = 0; k < 3; k++)
+        mx = fmax(mx, fmax(fmax(fabs(ab[k]), fabs(ac[k])),
+                           fmax(fabs(ap[k]), fmax(fabs(bp[k]), fabs(cp[k])))));
+    if (mx > 0 && isfinite(mx)) f = ldexp(1.0, -ilogb(mx));
+    for (int k = 0; k < 3; k++)
+        sab[k] = f * ab[k], sac[k] = f * ac[k], sap[k] = f * ap[k], sbp[k] = f * bp[k],
+        scp[k] = f * cp[k];
+    double d1 = dot(sab, sap), d2 = dot(sac, sap);
     const double *q = NULL;
     double v = 0, w = 0;
     if (d1 <= 0 && d2 <= 0) q = a;
-    sub(x, b, bp);
-    double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    double d3 = dot(sab, sbp), d4 = dot(sac, sbp);
     if (!q && d3 >= 0 && d4 <= d3) q = b;
-    sub(x, c, cp);
-    double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    double d5 = dot(sab, scp), d6 = dot(sac, scp);
     if (!q && d6 >= 0 && d5 <= d6) q = c;
     if (q) {
         sub(x, q, r);

@@ -213,6 +213,57 @@ static void test_hal3_far_vertex_balls_finite(void)
     fl_hal3_free(&h);
 }
 
+/* A stellated octahedron (every face raised to an apex at twice its centroid) times s. */
+static void stellated(double s, double *xyz, uint32_t *tri, size_t *nv, size_t *nt)
+{
+    for (int i = 0; i < 18; i++) xyz[i] = 0;
+    for (int i = 0; i < 6; i++) xyz[3 * i + i / 2] = (i & 1) ? -4 : 4;
+    *nv = 6, *nt = 0;
+    for (uint32_t f = 0; f < 8; f++) {
+        uint32_t a = f & 1, b = 2 + ((f >> 1) & 1), c = 4 + ((f >> 2) & 1), q = (uint32_t)*nv;
+        if ((a + b + c) & 1) { /* keep the triangles outward */
+            uint32_t x = b;
+            b = c, c = x;
+        }
+        for (int k = 0; k < 3; k++)
+            xyz[3 * q + k] = 2.0 * (xyz[3 * a + k] + xyz[3 * b + k] + xyz[3 * c + k]) / 3.0;
+        ++*nv;
+        uint32_t e[9] = {a, b, q, b, c, q, c, a, q};
+        memcpy(tri + 3 * *nt, e, sizeof e);
+        *nt += 3;
+    }
+    for (size_t i = 0; i < 3 * *nv; i++) xyz[i] *= s;
+}
+
+/* fuzz_hal3: the node error (largest vertex distance to the node's triangle) multiplied dot
+ * products, 4th powers of the coordinates; at 1e100 they overflowed to NaN, which fmax
+ * dropped: a node certified error 0 with a vertex 1.75e100 away. The certified error of every
+ * level must bound the brute-force distance of every vertex to its approximation. */
+static void test_hal3_errors_at_1e100(void)
+{
+    double xs[3 * 14];
+    uint32_t tri[3 * 24];
+    size_t nv, nt;
+    stellated(1e100, xs, tri, &nv, &nt);
+    fl_mesh ms = {nv, xs, nt, tri};
+    fl_hal3 hs;
+    fl_error err;
+    CHECK_STATUS(fl_hal3_build(&ms, NULL, &hs, &err), FL_OK, &err);
+    if (!hs.nodes) return;
+    for (uint32_t level = 0; level <= hs.depth; level++) {
+        fl_mesh ap;
+        double e = -1;
+        CHECK_STATUS(fl_hal3_approximate_level(&hs, level, &ap, &e, &err), FL_OK, &err);
+        for (size_t i = 0; i < nv; i++) {
+            ld d = brute_mesh_distance(&ap, xs + 3 * i);
+            CHECK_MSG(d <= (ld)e * (1 + 1e-9), "level %u: vertex %zu at %.17Lg, certified %.17g",
+                      level, i, d, e);
+        }
+        fl_mesh_free(&ap);
+    }
+    fl_hal3_free(&hs);
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
@@ -223,6 +274,7 @@ int main(void)
         FL_TEST_CASE(test_g1_surface_extreme_scales),
         FL_TEST_CASE(test_hal3_extreme_scale),
         FL_TEST_CASE(test_hal3_far_vertex_balls_finite),
+        FL_TEST_CASE(test_hal3_errors_at_1e100),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

@@ -1,9 +1,9 @@
 /* Fuzzes the skin surface module on up to 6 decoded balls (grid centres, weights mostly small
  * positive, sometimes zero, negative, NaN or huge) and a shrink factor t: fl_skin_function_new +
- * fl_skin_function_value, then fl_skin_mesh with a small cube budget. Invariants: NaN/Inf or no
- * positive weight gives FL_ERR_INPUT, t outside (0, 1) FL_ERR_USAGE; G < 0 at the centre of every
- * ball of positive weight (the centre is inside b^t, so inside the body), G > 0 far outside every
- * ball; on success the mesh is closed, manifold and oriented (fl_mesh_check), outward (positive
+ * fl_skin_function_value, then fl_skin_mesh with a small cube budget. Invariants: NaN/Inf, a
+ * value beyond 1e100 or no positive weight gives FL_ERR_INPUT, t outside (0, 1) FL_ERR_USAGE;
+ * G < 0 at the centre of every ball of positive weight (the centre is inside b^t, so inside the
+ * body), G > 0 far outside every ball; on success the mesh is closed, manifold and oriented (fl_mesh_check), outward (positive
  * volume), with finite vertices inside the balls' bounding box, and the measured vertex offset
  * within a grid cell. */
 #include "fuzz_common.h"
@@ -23,7 +23,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         uint8_t w = fz_byte(&in);
         if (w < 0xe0) xyzw[4 * i + 3] = (double)(1 + (w & 15)) / 4.0 - ((w & 0x10) ? 1.0 : 0.0);
         else xyzw[4 * i + 3] = fz_coord(&in);
-        if (!isfinite(xyzw[4 * i + 3])) bad = 1;
+        for (int k = 0; k < 4; k++) /* NaN/Inf or beyond the implemented |value| <= 1e100 */
+            if (!(fabs(xyzw[4 * i + k]) <= 1e100)) bad = 1;
         if (xyzw[4 * i + 3] > 0) {
             positive = 1;
             double r = sqrt(xyzw[4 * i + 3]);

@@ -1676,8 +1676,9 @@ typedef struct fl_skin_function fl_skin_function;
 /* Builds G for the n balls xyzw[4n] and shrink factor t in (0, 1). At least one ball needs a
  * positive weight. Up to 8 balls need no triangulation (every subset of at most 4 balls is a
  * candidate simplex); more need 4 centres not in a plane (the regular triangulation, fl_rt3).
- * FL_ERR_USAGE for NULL pointers or t outside (0, 1); FL_ERR_INPUT for NaN/Inf, no positive
- * weight, coplanar centres (n > 8); FL_ERR_NOMEM. Free with fl_skin_function_free. */
+ * FL_ERR_USAGE for NULL pointers or t outside (0, 1); FL_ERR_INPUT for NaN/Inf or a value
+ * beyond 1e100, no positive weight, coplanar centres (n > 8); FL_ERR_NOMEM. Free with
+ * fl_skin_function_free. */
 fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_function **out,
                                fl_error *err);
 

@@ -264,6 +264,22 @@ static void test_hal3_errors_at_1e100(void)
     fl_hal3_free(&hs);
 }
 
+/* fuzz_skin: one ball of weight 1e-150 (reach 7e-76) next to an ordinary one: the lookup grid
+ * was sized from a box of volume 9e-74 to 1e27 cells along an axis, a double -> size_t
+ * conversion out of range (UBSan aborts in the sanitizer build of this test). */
+static void test_skin_flat_box_grid(void)
+{
+    double b[] = {-8, -8, -8, 1e-150, 0, 0, 0, 0.25};
+    fl_skin_function *g = NULL;
+    fl_error err;
+    CHECK_STATUS(fl_skin_function_new(b, 2, 0.5, &g, &err), FL_OK, &err);
+    if (!g) return;
+    double c[3] = {0, 0, 0}, far[3] = {40, 40, 40};
+    CHECK(fl_skin_function_value(g, c) < 0);
+    CHECK(fl_skin_function_value(g, far) > 0);
+    fl_skin_function_free(g);
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
@@ -275,6 +291,7 @@ int main(void)
         FL_TEST_CASE(test_hal3_extreme_scale),
         FL_TEST_CASE(test_hal3_far_vertex_balls_finite),
         FL_TEST_CASE(test_hal3_errors_at_1e100),
+        FL_TEST_CASE(test_skin_flat_box_grid),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

@@ -59,11 +59,14 @@ static void fuzz_svg(fz_in *in)
             st = fl_svg_add_edges(svg, v, n, e, 2, &style, &err);
             break;
         }
-        case 4:
-            bad |= !(v[2 * n - 1] >= 0) && n > 1;
-            st = fl_svg_add_disc(svg, v[0], v[1], n > 1 ? v[2 * n - 1] : 0, &style, &err);
+        case 4: { /* uses the centre and the radius only */
+            double r = n > 1 ? v[2 * n - 1] : 0;
+            bad = !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(r) || !(r >= 0);
+            st = fl_svg_add_disc(svg, v[0], v[1], r, &style, &err);
             break;
+        }
         case 5: {
+            bad = !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2 * n - 1]);
             double d0[3] = {v[0], v[1], fabs(v[2 * n - 1])}, d1[3] = {v[1], v[0], 1.5};
             st = fl_svg_add_lens(svg, d0, d1, &style, &err);
             break;
@@ -71,7 +74,8 @@ static void fuzz_svg(fz_in *in)
         case 6: {
             double disc[3] = {v[0], v[1], fabs(v[2 * n - 1])}, a[2] = {v[1], v[0]},
                    b[2] = {v[0] + 1, v[1]};
-            bad |= !isfinite(b[0]) || (a[0] == b[0] && a[1] == b[1]);
+            bad = !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2 * n - 1]) ||
+                  !isfinite(b[0]) || (a[0] == b[0] && a[1] == b[1]);
             st = fl_svg_add_disc_halfplane(svg, disc, a, b, (kind & 0x80) ? 1 : -1, &style, &err);
             break;
         }

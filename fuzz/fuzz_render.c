@@ -56,6 +56,9 @@ static void fuzz_svg(fz_in *in)
         }
         case 3: {
             uint32_t e[4] = {0, (uint32_t)(n - 1), (uint32_t)(n / 2), 0};
+            bad = 0; /* only the points the edges use */
+            for (int k = 0; k < 4; k++)
+                bad |= !isfinite(v[2 * e[k]]) || !isfinite(v[2 * e[k] + 1]);
             st = fl_svg_add_edges(svg, v, n, e, 2, &style, &err);
             break;
         }

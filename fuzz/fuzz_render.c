@@ -24,6 +24,12 @@ static void expect(fl_status st, const fl_error *err, int bad, const char *call)
     else FZ_ASSERT(st == FL_OK, "%s: valid input gave %d: %s", call, (int)st, err->message);
 }
 
+/* The disc's box is representable (the canvas rejects discs beyond the double range). */
+static int disc_ok(double x, double y, double r)
+{
+    return isfinite(x - r) && isfinite(x + r) && isfinite(y - r) && isfinite(y + r);
+}
+
 static size_t count_of(const char *text, const char *what)
 {
     size_t c = 0;
@@ -64,12 +70,14 @@ static void fuzz_svg(fz_in *in)
         }
         case 4: { /* uses the centre and the radius only */
             double r = n > 1 ? v[2 * n - 1] : 0;
-            bad = !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(r) || !(r >= 0);
+            bad = !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(r) || !(r >= 0) ||
+                  !disc_ok(v[0], v[1], r);
             st = fl_svg_add_disc(svg, v[0], v[1], r, &style, &err);
             break;
         }
         case 5: {
-            bad = !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2 * n - 1]);
+            bad = !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2 * n - 1]) ||
+                  !disc_ok(v[0], v[1], fabs(v[2 * n - 1])) || !disc_ok(v[1], v[0], 1.5);
             double d0[3] = {v[0], v[1], fabs(v[2 * n - 1])}, d1[3] = {v[1], v[0], 1.5};
             st = fl_svg_add_lens(svg, d0, d1, &style, &err);
             break;
@@ -78,7 +86,8 @@ static void fuzz_svg(fz_in *in)
             double disc[3] = {v[0], v[1], fabs(v[2 * n - 1])}, a[2] = {v[1], v[0]},
                    b[2] = {v[0] + 1, v[1]};
             bad = !isfinite(v[0]) || !isfinite(v[1]) || !isfinite(v[2 * n - 1]) ||
-                  !isfinite(b[0]) || (a[0] == b[0] && a[1] == b[1]);
+                  !disc_ok(v[0], v[1], fabs(v[2 * n - 1])) || !isfinite(b[0]) ||
+                  (a[0] == b[0] && a[1] == b[1]);
             st = fl_svg_add_disc_halfplane(svg, disc, a, b, (kind & 0x80) ? 1 : -1, &style, &err);
             break;
         }

@@ -1,6 +1,9 @@
 /* Regressions for what the round-3 fuzz targets (fuzz_hausdorff, fuzz_smooth, fuzz_hal3,
  * fuzz_skin, fuzz_render) found. Each case is the minimized finding; the answer is checked
  * against an independent method (long-double brute-force distances, tests/sweep/sweep_oracle.h). */
+#include <stdio.h>
+#include <unistd.h>
+
 #include "degen.h"
 #include "sweep/sweep_oracle.h"
 
@@ -280,6 +283,36 @@ static void test_skin_flat_box_grid(void)
     fl_skin_function_free(g);
 }
 
+/* fuzz_render: the half-plane part of a disc of radius 1e300 cut by a line through points near
+ * the origin: the chord's construction overflowed and "-inf" was written into the SVG. */
+static void test_svg_halfplane_huge_disc(void)
+{
+    fl_svg *svg = NULL;
+    fl_error err;
+    CHECK_STATUS(fl_svg_new(100, &svg, &err), FL_OK, &err);
+    if (!svg) return;
+    double disc[3] = {1.0198041672000625e-309, -7.75, 1e300};
+    double a[2] = {-7.75, 1.0198041672000625e-309};
+    double b[2] = {1, -7.75}, huge[3] = {-1e308, 0, 1e308};
+    CHECK_STATUS(fl_svg_add_disc_halfplane(svg, disc, a, b, -1, NULL, &err), FL_OK, &err);
+    CHECK_FAILS(fl_svg_add_disc(svg, huge[0], huge[1], huge[2], NULL, &err), &err, FL_ERR_INPUT,
+                "double range");
+    char path[64];
+    snprintf(path, sizeof path, "fuzz_round3_%ld.svg", (long)getpid());
+    CHECK_STATUS(fl_svg_write(svg, path, &err), FL_OK, &err);
+    FILE *f = fopen(path, "rb");
+    CHECK(f != NULL);
+    if (f) {
+        char text[4096];
+        size_t n = fread(text, 1, sizeof text - 1, f);
+        text[n] = 0;
+        fclose(f);
+        CHECK_MSG(!strstr(text, "inf") && !strstr(text, "nan"), "non-finite in:\n%s", text);
+    }
+    remove(path);
+    fl_svg_free(svg);
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
@@ -292,6 +325,7 @@ int main(void)
         FL_TEST_CASE(test_hal3_far_vertex_balls_finite),
         FL_TEST_CASE(test_hal3_errors_at_1e100),
         FL_TEST_CASE(test_skin_flat_box_grid),
+        FL_TEST_CASE(test_svg_halfplane_huge_disc),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

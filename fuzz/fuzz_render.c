@@ -97,6 +97,7 @@ static void fuzz_svg(fz_in *in)
                 n = 4;
                 bad = !all_finite(v, 8);
             }
+            bad = !all_finite(v, 2 * (3 * ((n - 1) / 3) + 1)); /* the control points used */
             st = fl_svg_add_bezier(svg, v, (n - 1) / 3, &style, &err);
             break;
         }

@@ -1716,8 +1716,8 @@ typedef struct fl_skin_stats {
  * oriented (outward, counter-clockwise) 2-manifold triangle mesh for every input; it has the
  * topology of the skin when the grid resolves its features (necks thinner than the cell can
  * be missed; docs/skin.md). stats may be NULL. Errors as fl_skin_function_new, plus
- * FL_ERR_INPUT when the grid would exceed max_cubes cubes or 2^20 cells along an axis,
- * FL_ERR_ALGORITHM "cancelled". On failure *out is zeroed. Free with fl_mesh_free. */
+ * FL_ERR_INPUT when the grid would exceed max_cubes cubes or 2^20 cells along an axis or its
+ * spacing is below 1e-12 of a coordinate, FL_ERR_ALGORITHM "cancelled". On failure *out is zeroed. Free with fl_mesh_free. */
 fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
                        fl_skin_stats *stats, fl_error *err);
 

@@ -313,6 +313,21 @@ static void test_svg_halfplane_huge_disc(void)
     fl_svg_free(svg);
 }
 
+/* fuzz_skin: a ball of radius 1e-75 at x = -8 asked for a grid spacing far below the
+ * coordinates' resolution; grid points coincided after rounding and the mesh had 16 boundary
+ * edges. Such a grid is refused now. */
+static void test_skin_spacing_below_resolution(void)
+{
+    double b[] = {-4.25, 0, -8, 1e-150, -8, 0, 0, -0.75};
+    fl_skin_options o = {0};
+    o.t = 0.5;
+    o.cell = 7.0710678118654757e-76;
+    fl_mesh m;
+    fl_error err;
+    CHECK_FAILS(fl_skin_mesh(b, 2, &o, &m, NULL, &err), &err, FL_ERR_INPUT, "resolution");
+    CHECK(m.xyz == NULL);
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
@@ -326,6 +341,7 @@ int main(void)
         FL_TEST_CASE(test_hal3_errors_at_1e100),
         FL_TEST_CASE(test_skin_flat_box_grid),
         FL_TEST_CASE(test_svg_halfplane_huge_disc),
+        FL_TEST_CASE(test_skin_spacing_below_resolution),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

@@ -1415,7 +1415,7 @@ typedef struct fl_g1_curve {
 } fl_g1_curve;
 
 /* Builds the G1 curve of every ring of `polygon` (each ring at least 3 vertices, finite
- * coordinates, no two consecutive vertices equal, no ring turning back on itself by 180
+ * coordinates with |x| <= 1e150, no two consecutive vertices equal, no ring turning back on itself by 180
  * degrees at a vertex). FL_ERR_INPUT otherwise, FL_ERR_USAGE for bad options, FL_ERR_NOMEM.
  * On failure *out is zeroed. Free with fl_g1_curve_free. */
 fl_status fl_g1_curve_build(const fl_polygon *polygon, const fl_g1_curve_options *opt,
@@ -1483,8 +1483,8 @@ typedef struct fl_g1_surface {
                                  * thesis's cubic curve (docs/smooth.md) */
 } fl_g1_surface;
 
-/* Builds the surface over a closed, manifold, oriented mesh (fl_mesh_check; else FL_ERR_INPUT
- * naming what is wrong), interpolating its vertices and estimated normals. O(V + T log T).
+/* Builds the surface over a closed, manifold, oriented mesh with coordinates |x| <= 1e150
+ * (fl_mesh_check; else FL_ERR_INPUT naming what is wrong), interpolating its vertices and estimated normals. O(V + T log T).
  * FL_ERR_USAGE for bad options, FL_ERR_NOMEM. On failure *out is zeroed. */
 fl_status fl_g1_surface_build(const fl_mesh *mesh, const fl_g1_surface_options *opt,
                               fl_g1_surface *out, fl_error *err);
@@ -1599,8 +1599,8 @@ typedef struct fl_hal3_options {
 /* Builds the flintstone tree of a closed triangle mesh (Algorithm 7.2). `opt` may be NULL.
  * The mesh must be closed, manifold, oriented, connected, of genus 0, without degenerate
  * triangles; otherwise FL_ERR_INPUT names the problem (e.g. "genus 1: the HAL tree needs a
- * sphere-like surface"). Also FL_ERR_INPUT for NaN/Inf coordinates, FL_ERR_USAGE for NULL
- * arguments or a threshold outside [0, pi/3], FL_ERR_ALGORITHM when cancelled or when the
+ * sphere-like surface"). Also FL_ERR_INPUT for NaN/Inf coordinates or |x| > 1e150,
+ * FL_ERR_USAGE for NULL arguments or a threshold outside [0, pi/3], FL_ERR_ALGORITHM when cancelled or when the
  * refinement cannot proceed (the message says where), FL_ERR_NOMEM. On failure *out is zeroed.
  * Free with fl_hal3_free. */
 fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3 *out,
@@ -1676,8 +1676,9 @@ typedef struct fl_skin_function fl_skin_function;
 /* Builds G for the n balls xyzw[4n] and shrink factor t in (0, 1). At least one ball needs a
  * positive weight. Up to 8 balls need no triangulation (every subset of at most 4 balls is a
  * candidate simplex); more need 4 centres not in a plane (the regular triangulation, fl_rt3).
- * FL_ERR_USAGE for NULL pointers or t outside (0, 1); FL_ERR_INPUT for NaN/Inf, no positive
- * weight, coplanar centres (n > 8); FL_ERR_NOMEM. Free with fl_skin_function_free. */
+ * FL_ERR_USAGE for NULL pointers or t outside (0, 1); FL_ERR_INPUT for NaN/Inf or a value
+ * beyond 1e100, no positive weight, coplanar centres (n > 8); FL_ERR_NOMEM. Free with
+ * fl_skin_function_free. */
 fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_function **out,
                                fl_error *err);
 
@@ -1715,8 +1716,8 @@ typedef struct fl_skin_stats {
  * oriented (outward, counter-clockwise) 2-manifold triangle mesh for every input; it has the
  * topology of the skin when the grid resolves its features (necks thinner than the cell can
  * be missed; docs/skin.md). stats may be NULL. Errors as fl_skin_function_new, plus
- * FL_ERR_INPUT when the grid would exceed max_cubes cubes or 2^20 cells along an axis,
- * FL_ERR_ALGORITHM "cancelled". On failure *out is zeroed. Free with fl_mesh_free. */
+ * FL_ERR_INPUT when the grid would exceed max_cubes cubes or 2^20 cells along an axis or its
+ * spacing is below 1e-12 of a coordinate, FL_ERR_ALGORITHM "cancelled". On failure *out is zeroed. Free with fl_mesh_free. */
 fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
                        fl_skin_stats *stats, fl_error *err);
 

@@ -26,15 +26,28 @@ static inline void g1_cross(const double *a, const double *b, double *r)
 }
 
 /* Scales v to unit length; returns its former length. */
+/* |v| without overflow or underflow of |v|^2 (components of 1e-150 or 1e150 are in range). */
+static inline double g1_length(const double *v)
+{
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(m > 0) || isinf(m)) return m;
+    double s[3] = {v[0] / m, v[1] / m, v[2] / m};
+    return m * sqrt(g1_dot(s, s));
+}
+
 static inline double g1_normalize(double *v)
 {
-    double n = sqrt(g1_dot(v, v));
-    if (n > 0) {
-        v[0] /= n;
-        v[1] /= n;
-        v[2] /= n;
-    }
-    return n;
+    /* Divide by the largest component first: |v|^2 overflowed to inf for components beyond
+     * ~1e154 and "normalized" v to the zero vector while reporting success (found by
+     * fuzz/fuzz_smooth.c on a mesh at 1e306). Returns |v| (inf when it overflows), 0 for the
+     * zero vector and NaN for a non-finite v, which is left unchanged. */
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(m > 0) || isinf(m)) return m == 0 ? 0 : NAN;
+    double s[3] = {v[0] / m, v[1] / m, v[2] / m}, n = sqrt(g1_dot(s, s));
+    v[0] = s[0] / n;
+    v[1] = s[1] / n;
+    v[2] = s[2] / n;
+    return n * m;
 }
 
 /* Half-edge 3t+k runs from tri[3t+k] to tri[3t+(k+1)%3]; opp[h] is the half-edge running the

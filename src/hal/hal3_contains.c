@@ -1,25 +1,27 @@
 /* Hierarchical point-in-polyhedron on the flintstone tree (thesis §7.4, HAL paper §5.1).
  *
- * Point inclusion is the parity of the crossings of the ray from X in +x direction with the
- * triangles. The ray is symbolically perturbed: X is moved by (0, e, e^2) in (y, z) for an
- * infinitesimal e, so it meets no edge or vertex in the yz-projection and the parity is the
- * winding number's for every X off the surface; a triangle is crossed when the perturbed X lies
- * inside its yz-projection (fl_orient2d, ties broken by the perturbation's first non-zero term)
- * and behind its plane (fl_orient3d). X on a triangle is decided exactly.
+ * Point inclusion is the parity of the crossings of an axis-parallel ray from X with the
+ * triangles: along axis k, towards the nearest face of the mesh's bounding box (a short ray
+ * enters few subtrees; the answer does not depend on the choice). The ray is symbolically
+ * perturbed: X is moved by (e, e^2) in the coordinates (k+1, k+2) for an infinitesimal e, so
+ * it meets no edge or vertex in that projection and the parity is the winding number's for
+ * every X off the surface; a triangle is crossed when the perturbed X lies inside its
+ * projection (fl_orient2d, ties broken by the perturbation's first non-zero term) and its
+ * plane is ahead of X (fl_orient3d). X on a triangle is decided exactly.
  *
  * Pruning. The tree's parts (the nodes' pieces of surface) are compact patches, a good
  * hierarchy; but a ball is a poor bound for a ray: a part of diameter d whose flintstone has
  * radius r ~ d is entered by every ray through a disc of area ~ pi d^2, however flat the part,
- * and a ray through a long object meets many such balls (the first version, ray against the
- * flintstones, was 4-15x slower than CGAL's AABB tree). So each call first lays the tree out
- * for the ray (`ray_tree`): the non-empty nodes in depth-first order with a skip index (the end
- * of the subtree: a stackless walk), chains of single-child nodes collapsed, and for each node
- * the exact bounds of its triangles' coordinates that a +x ray can see: the y and z ranges and
- * the largest x. Min/max of doubles are exact, so "X_y outside [ylo, yhi], X_z outside
- * [zlo, zhi] or X_x > xhi" proves that the ray (and its infinitesimal perturbation, the tests
- * being closed) misses every triangle of the subtree. Leaves carry their triangle's
- * coordinates, so the walk reads one contiguous array. The answers are the brute-force test's;
- * the flintstones' role here is the hierarchy, not the bound. */
+ * and a ray through a long object meets many such balls (the first version, a +x ray against
+ * the flintstones, was 4-15x slower than CGAL's AABB tree). So each call first lays the tree
+ * out for rays (`ray_tree`): the non-empty nodes in depth-first order with a skip index (the
+ * end of the subtree: a stackless walk over one array), chains of single-child nodes collapsed,
+ * and for each node the bounds of its triangles' coordinates, rounded outwards to float (32
+ * bytes an entry). A subtree is skipped only when a float comparison proves X outside its
+ * range in the two other axes or its range behind X, so the ray (and its infinitesimal
+ * perturbation, the tests being closed) misses every triangle of it. Leaves carry their
+ * triangle's coordinates. The answers are the brute-force test's; the tree's role here is the
+ * hierarchy, the flintstones' balls are not used. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,9 +30,9 @@
 #include "hal/hal3_internal.h"
 
 typedef struct ray_entry {
-    double ylo, yhi, zlo, zhi, xhi;
-    uint32_t skip; /* first entry after this subtree */
-    uint32_t leaf; /* index of the triangle in ray_tree.tri, or FL_HAL3_NONE */
+    float lo[3], hi[3]; /* bounds of the subtree's vertices, rounded outwards */
+    uint32_t skip;      /* first entry after this subtree */
+    uint32_t leaf;      /* index of the triangle in ray_tree.tri, or FL_HAL3_NONE */
 } ray_entry;
 
 typedef struct ray_tree {
@@ -38,7 +40,21 @@ typedef struct ray_tree {
     size_t n;
     double *tri; /* 9 doubles a leaf: a, b, c */
     size_t nleaf;
+    double lo[3], hi[3]; /* bounding box of the mesh */
 } ray_tree;
+
+/* float bounds that hold the double v: comparisons of a double with a float are exact. */
+static float down(double v)
+{
+    float f = (float)v;
+    return (double)f > v ? nextafterf(f, -INFINITY) : f;
+}
+
+static float up(double v)
+{
+    float f = (float)v;
+    return (double)f < v ? nextafterf(f, INFINITY) : f;
+}
 
 static void ray_tree_free(ray_tree *t)
 {
@@ -64,11 +80,10 @@ static void leaf_entry(const fl_hal3 *hal, const fl_hal3_node *nd, ray_tree *t)
     double *p = t->tri + 9 * t->nleaf;
     const uint32_t *v = hal->mesh.tri + 3 * (size_t)nd->face;
     for (int k = 0; k < 3; k++) memcpy(p + 3 * k, hal->mesh.xyz + 3 * (size_t)v[k], 24);
-    e->ylo = fmin(p[1], fmin(p[4], p[7]));
-    e->yhi = fmax(p[1], fmax(p[4], p[7]));
-    e->zlo = fmin(p[2], fmin(p[5], p[8]));
-    e->zhi = fmax(p[2], fmax(p[5], p[8]));
-    e->xhi = fmax(p[0], fmax(p[3], p[6]));
+    for (int k = 0; k < 3; k++) {
+        e->lo[k] = down(fmin(p[k], fmin(p[k + 3], p[k + 6])));
+        e->hi[k] = up(fmax(p[k], fmax(p[k + 3], p[k + 6])));
+    }
     e->leaf = (uint32_t)t->nleaf++;
     e->skip = (uint32_t)++t->n;
 }
@@ -78,14 +93,12 @@ static void close_entry(ray_tree *t, uint32_t i)
 {
     ray_entry *e = &t->e[i];
     e->skip = (uint32_t)t->n;
-    e->ylo = e->zlo = INFINITY;
-    e->yhi = e->zhi = e->xhi = -INFINITY;
-    for (uint32_t j = i + 1; j < e->skip; j = t->e[j].skip) {
-        const ray_entry *c = &t->e[j];
-        e->ylo = fmin(e->ylo, c->ylo), e->yhi = fmax(e->yhi, c->yhi);
-        e->zlo = fmin(e->zlo, c->zlo), e->zhi = fmax(e->zhi, c->zhi);
-        e->xhi = fmax(e->xhi, c->xhi);
-    }
+    for (int k = 0; k < 3; k++) e->lo[k] = INFINITY, e->hi[k] = -INFINITY;
+    for (uint32_t j = i + 1; j < e->skip; j = t->e[j].skip)
+        for (int k = 0; k < 3; k++) {
+            e->lo[k] = fminf(e->lo[k], t->e[j].lo[k]);
+            e->hi[k] = fmaxf(e->hi[k], t->e[j].hi[k]);
+        }
 }
 
 /* Lays out the non-empty part of the tree depth-first (explicit stack: the depth is not
@@ -126,6 +139,11 @@ static fl_status ray_tree_build(const fl_hal3 *hal, ray_tree *t)
         }
     }
     fl_vec_free(&stack);
+    for (int k = 0; k < 3; k++) t->lo[k] = INFINITY, t->hi[k] = -INFINITY;
+    for (size_t v = 0; v < 9 * t->nleaf && !bad; v++) {
+        t->lo[v % 3] = fmin(t->lo[v % 3], t->tri[v]);
+        t->hi[v % 3] = fmax(t->hi[v % 3], t->tri[v]);
+    }
     if (bad || t->n >= CLOSE) {
         ray_tree_free(t);
         return FL_ERR_NOMEM;
@@ -148,8 +166,8 @@ static int on_triangle(const double *a, const double *b, const double *c, const 
     return 0;
 }
 
-/* The sign o = orient2d(a, b, x) in the yz-plane (a, b, x point at (y, z)) made non-zero by the
- * perturbation x + (e, e^2): the first non-zero coefficient of e, e^2. */
+/* The sign o = orient2d(a, b, x) of 2D points made non-zero by the perturbation
+ * x + (e, e^2): the first non-zero coefficient of e (a1 - b1), then of e^2 (b0 - a0). */
 static int perturbed(int o, const double *a, const double *b)
 {
     if (o) return o;
@@ -157,47 +175,74 @@ static int perturbed(int o, const double *a, const double *b)
     return b[0] > a[0] ? 1 : b[0] < a[0] ? -1 : 0;
 }
 
-/* One leaf whose bounds the ray enters: 2 when x is on the triangle, else 1 when the perturbed
- * ray crosses it, else 0. The unperturbed signs decide first: x strictly outside the closed
- * yz-projection is neither on the triangle nor crossing; inside the closed projection of a
- * triangle whose plane is not parallel to x, orient3d = 0 means on the triangle. */
-static int leaf_test(const double *p, const double *x)
+/* One leaf whose bounds the ray from x along axis k (dir = +1 or -1) enters: 2 when x is on
+ * the triangle, else 1 when the perturbed ray crosses it, else 0. The projection is onto the
+ * axes (k+1, k+2) (a cyclic permutation, so fl_orient3d's sign is that of the permuted
+ * coordinates). The unperturbed signs decide first: x strictly outside the closed projection is
+ * neither on the triangle nor crossing; inside the closed projection of a triangle whose plane
+ * is not parallel to the ray, orient3d = 0 means on the triangle. */
+static int leaf_test(const double *p, const double *x, int k, int dir)
 {
     const double *a = p, *b = p + 3, *c = p + 6;
-    int s = fl_orient2d(a + 1, b + 1, c + 1);
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    double A[2] = {a[i], a[j]}, B[2] = {b[i], b[j]}, C[2] = {c[i], c[j]}, X[2] = {x[i], x[j]};
+    int s = fl_orient2d(A, B, C);
     if (s == 0) return on_triangle(a, b, c, x) ? 2 : 0;
-    int o1 = fl_orient2d(a + 1, b + 1, x + 1);
+    int o1 = fl_orient2d(A, B, X);
     if (o1 == -s) return 0;
-    int o2 = fl_orient2d(b + 1, c + 1, x + 1);
+    int o2 = fl_orient2d(B, C, X);
     if (o2 == -s) return 0;
-    int o3 = fl_orient2d(c + 1, a + 1, x + 1);
+    int o3 = fl_orient2d(C, A, X);
     if (o3 == -s) return 0;
     int o = fl_orient3d(a, b, c, x);
     if (o == 0) return 2;
-    if (perturbed(o1, a + 1, b + 1) != s || perturbed(o2, b + 1, c + 1) != s ||
-        perturbed(o3, c + 1, a + 1) != s)
+    if (perturbed(o1, A, B) != s || perturbed(o2, B, C) != s || perturbed(o3, C, A) != s)
         return 0;
-    return o * s > 0;
+    return o * s * dir > 0;
 }
 
-/* 2 on the surface, else the crossing parity. */
-static int point_parity(const ray_tree *t, const double *x)
+/* 2 on the surface, else the crossing parity of the ray from x along axis k, direction dir.
+ * An entry is skipped when x is outside its range in the two other axes or its whole range
+ * lies behind x: six float comparisons against u (x rounded up; +inf where no lower bound is
+ * tested) and d (x rounded down; -inf where no upper bound is tested), so "lo > u" proves
+ * x < lo and "hi < d" proves x > hi. One branch, not six: the outcome is data-dependent and
+ * poorly predicted. */
+static int point_parity(const ray_tree *t, const double *x, int k, int dir)
 {
+    float u[3], d[3];
+    for (int c = 0; c < 3; c++) u[c] = up(x[c]), d[c] = down(x[c]);
+    if (dir > 0)
+        u[k] = INFINITY;
+    else
+        d[k] = -INFINITY;
     int parity = 0;
-    const double px = x[0], py = x[1], pz = x[2];
-    for (size_t i = 0; i < t->n;) {
-        const ray_entry *e = &t->e[i];
-        if (py < e->ylo || py > e->yhi || pz < e->zlo || pz > e->zhi || px > e->xhi) {
-            i = e->skip;
+    for (size_t n = 0; n < t->n;) {
+        const ray_entry *e = &t->e[n];
+        if ((e->lo[0] > u[0]) | (e->lo[1] > u[1]) | (e->lo[2] > u[2]) | (e->hi[0] < d[0]) |
+            (e->hi[1] < d[1]) | (e->hi[2] < d[2])) {
+            n = e->skip;
             continue;
         }
-        i++;
+        n++;
         if (e->leaf == FL_HAL3_NONE) continue;
-        int r = leaf_test(t->tri + 9 * (size_t)e->leaf, x);
+        int r = leaf_test(t->tri + 9 * (size_t)e->leaf, x, k, dir);
         if (r == 2) return 2;
         parity ^= r;
     }
     return parity;
+}
+
+/* Ray direction: towards the nearest face of the mesh's bounding box (the shortest ray meets
+ * the fewest subtrees; CGAL's Side_of_triangle_mesh picks the nearer of +-z the same way). */
+static int pick_axis(const ray_tree *t, const double *x, int *dir)
+{
+    int best = 0;
+    double d = INFINITY;
+    for (int k = 0; k < 3; k++) {
+        if (t->hi[k] - x[k] < d) d = t->hi[k] - x[k], best = k, *dir = 1;
+        if (x[k] - t->lo[k] < d) d = x[k] - t->lo[k], best = k, *dir = -1;
+    }
+    return best;
 }
 
 fl_status fl_hal3_contains(const fl_hal3 *hal, const double *xyz, size_t n, uint8_t *where,
@@ -207,15 +252,20 @@ fl_status fl_hal3_contains(const fl_hal3 *hal, const double *xyz, size_t n, uint
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_contains: NULL argument");
     if (hal->node_count == 0)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_contains: empty tree");
-    for (size_t k = 0; k < 3 * n; k++)
-        if (!isfinite(xyz[k]))
-            return fl_fail(err, FL_ERR_INPUT, NULL, -1, "hal3_contains: query %zu is not finite",
-                           k / 3);
     ray_tree t;
     if (ray_tree_build(hal, &t))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3_contains: out of memory");
     for (size_t k = 0; k < n; k++) {
-        int p = point_parity(&t, xyz + 3 * k);
+        const double *x = xyz + 3 * k;
+        if (!isfinite(x[0]) || !isfinite(x[1]) || !isfinite(x[2])) {
+            ray_tree_free(&t); /* the answers before it stay written */
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1, "hal3_contains: query %zu is not finite",
+                           k);
+        }
+        int out = 0, dir = 1;
+        for (int c = 0; c < 3; c++) out |= x[c] < t.lo[c] || x[c] > t.hi[c];
+        int axis = pick_axis(&t, x, &dir); /* sets dir: not in the same call's arguments */
+        int p = out ? 0 : point_parity(&t, x, axis, dir);
         where[k] = p == 2 ? FL_HAL3_BOUNDARY : p ? FL_HAL3_INSIDE : FL_HAL3_OUTSIDE;
     }
     ray_tree_free(&t);

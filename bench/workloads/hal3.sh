@@ -70,10 +70,10 @@ qem() { # NAME FILE: approximation error at equal triangle counts (no timing rat
   local name=$1 file=$2 line
   [ -e "$file" ] || return 0
   "$BENCH_BIN/hal3_qem" "$file" | grep '^QEM' | while read -r line; do
-    printf 'ROW|hal3_error_%s_%s|-|meshoptimizer simplify|-|-|%s; Hausdorff distance to the input (fl_hausdorff_meshes, certified upper bounds) at %s triangles: flintstone %s (certified bound %s), QEM %s (%s triangles)\n' \
+    printf 'ROW|hal3_error_%s_%s|-|meshoptimizer simplify|-|-|%s; at %s triangles (flintstone bound %s R), Hausdorff distance to the input / R (fl_hausdorff_meshes, certified upper ends): flintstone %s (input to approximation %s), QEM %s (%s; %s triangles)\n' \
       "$name" "$(field target "$line")" "$name" "$(field ours_tris "$line")" \
-      "$(field ours_h "$line")" "$(field ours_bound "$line")" "$(field qem_h "$line")" \
-      "$(field qem_tris "$line")"
+      "$(field ours_bound "$line")" "$(field ours_h "$line")" "$(field ours_h_in "$line")" \
+      "$(field qem_h "$line")" "$(field qem_h_in "$line")" "$(field qem_tris "$line")"
   done
 }
 

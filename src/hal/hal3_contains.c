@@ -30,7 +30,8 @@
 #include "hal/hal3_internal.h"
 
 typedef struct ray_entry {
-    float lo[3], hi[3]; /* bounds of the subtree's vertices, rounded outwards */
+    float b[6]; /* lo[3] and -hi[3] of the subtree's vertices, rounded outwards: a subtree is
+                   missed when some b[c] > w[c] (point_parity), one test form for all six */
     uint32_t skip;      /* first entry after this subtree */
     uint32_t leaf;      /* index of the triangle in ray_tree.tri, or FL_HAL3_NONE */
 } ray_entry;
@@ -81,8 +82,8 @@ static void leaf_entry(const fl_hal3 *hal, const fl_hal3_node *nd, ray_tree *t)
     const uint32_t *v = hal->mesh.tri + 3 * (size_t)nd->face;
     for (int k = 0; k < 3; k++) memcpy(p + 3 * k, hal->mesh.xyz + 3 * (size_t)v[k], 24);
     for (int k = 0; k < 3; k++) {
-        e->lo[k] = down(fmin(p[k], fmin(p[k + 3], p[k + 6])));
-        e->hi[k] = up(fmax(p[k], fmax(p[k + 3], p[k + 6])));
+        e->b[k] = down(fmin(p[k], fmin(p[k + 3], p[k + 6])));
+        e->b[k + 3] = -up(fmax(p[k], fmax(p[k + 3], p[k + 6])));
     }
     e->leaf = (uint32_t)t->nleaf++;
     e->skip = (uint32_t)++t->n;
@@ -93,12 +94,9 @@ static void close_entry(ray_tree *t, uint32_t i)
 {
     ray_entry *e = &t->e[i];
     e->skip = (uint32_t)t->n;
-    for (int k = 0; k < 3; k++) e->lo[k] = INFINITY, e->hi[k] = -INFINITY;
+    for (int c = 0; c < 6; c++) e->b[c] = INFINITY;
     for (uint32_t j = i + 1; j < e->skip; j = t->e[j].skip)
-        for (int k = 0; k < 3; k++) {
-            e->lo[k] = fminf(e->lo[k], t->e[j].lo[k]);
-            e->hi[k] = fmaxf(e->hi[k], t->e[j].hi[k]);
-        }
+        for (int c = 0; c < 6; c++) e->b[c] = fminf(e->b[c], t->e[j].b[c]);
 }
 
 /* Lays out the non-empty part of the tree depth-first (explicit stack: the depth is not
@@ -209,17 +207,15 @@ static int leaf_test(const double *p, const double *x, int k, int dir)
  * poorly predicted. */
 static int point_parity(const ray_tree *t, const double *x, int k, int dir)
 {
-    float u[3], d[3];
-    for (int c = 0; c < 3; c++) u[c] = up(x[c]), d[c] = down(x[c]);
-    if (dir > 0)
-        u[k] = INFINITY;
-    else
-        d[k] = -INFINITY;
+    float w[6]; /* u, then -d */
+    for (int c = 0; c < 3; c++) w[c] = up(x[c]), w[c + 3] = -down(x[c]);
+    w[dir > 0 ? k : k + 3] = INFINITY;
     int parity = 0;
     for (size_t n = 0; n < t->n;) {
         const ray_entry *e = &t->e[n];
-        if ((e->lo[0] > u[0]) | (e->lo[1] > u[1]) | (e->lo[2] > u[2]) | (e->hi[0] < d[0]) |
-            (e->hi[1] < d[1]) | (e->hi[2] < d[2])) {
+        int miss = 0;
+        for (int c = 0; c < 6; c++) miss |= e->b[c] > w[c];
+        if (miss) {
             n = e->skip;
             continue;
         }

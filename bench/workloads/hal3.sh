@@ -18,7 +18,6 @@ source "$(dirname "$0")/../lib.sh"
 NQ=${HAL3_QUERIES:-1000000}
 REPS=${HAL3_REPS:-3}
 NB=${HAL3_BRUTE:-2000}
-ratio() { awk -v o="$1" -v p="$2" 'BEGIN {printf "%.2f", o / p}'; }
 
 one_mesh() { # NAME FILE NOTES
   local name=$1 file=$2 notes=$3 prefix=$BENCH_DATA/hal3-$1 o p ob pb line diff brute other
@@ -41,8 +40,8 @@ one_mesh() { # NAME FILE NOTES
   diff=$("$BENCH_BIN/eval_hal3" compare "$prefix.random.ours.a" "$prefix.random.cgal.a")
   brute=$("$BENCH_BIN/eval_hal3" brute "$prefix" "$NB" "$prefix.random.ours.a" "$prefix.random.cgal.a")
   o=$(median <<<"${o%$'\n'}") p=$(median <<<"${p%$'\n'}")
-  printf 'ROW|hal3_inside_%s|%s|CGAL Side_of_triangle_mesh|%s|%s|%s; %s queries uniform in the bounding box, %s inside; answers differ from CGAL on %s; brute force on the first %s: %s (ours) / %s (CGAL) differ; build ours %s s (%s nodes), CGAL AABB tree %s s\n' \
-    "$name" "$o" "$p" "$(ratio "$o" "$p")" "$notes" "$NQ" "$inside" "$(field differ "$diff")" \
+  printf 'ROW|hal3_inside_%s|%s|CGAL Side_of_triangle_mesh|%s|-|%s; %s queries uniform in the bounding box, %s inside; answers differ from CGAL on %s; brute force on the first %s: %s (ours) / %s (CGAL) differ; build ours %s s (%s nodes), CGAL AABB tree %s s\n' \
+    "$name" "$o" "$p" "$notes" "$NQ" "$inside" "$(field differ "$diff")" \
     "$NB" "$(field diff0 "$brute")" "$(field diff1 "$brute")" "$(median <<<"${ob%$'\n'}")" \
     "$nodes" "$(median <<<"${pb%$'\n'}")"
   for other in near far; do
@@ -60,17 +59,19 @@ one_mesh() { # NAME FILE NOTES
       ip=$(field intersect "$line")
     done
     o=$(median <<<"${o%$'\n'}") p=$(median <<<"${p%$'\n'}") ob=$(median <<<"${ob%$'\n'}")
-    printf 'ROW|hal3_intersect_%s_%s|%s|CGAL PMP::do_intersect|%s|%s|%s and its moved copy (%s); answer ours %s, CGAL %s (%s crossing triangle pairs); ours without the two trees'"'"' build (%s s; with it the ratio is %s), CGAL'"'"'s time includes its boxes\n' \
-      "$name" $other "$o" "$p" "$(ratio "$o" "$p")" "$notes" $other "$io" "$ip" "$all" "$ob" \
+    printf 'ROW|hal3_intersect_%s_%s|%s|CGAL PMP::do_intersect|%s|-|%s and its moved copy (%s); answer ours %s, CGAL %s (%s crossing triangle pairs); ours without the two trees'"'"' build (%s s; with it the ratio is %s), CGAL'"'"'s time includes its boxes\n' \
+      "$name" $other "$o" "$p" "$notes" $other "$io" "$ip" "$all" "$ob" \
       "$(awk -v o="$o" -v b="$ob" -v p="$p" 'BEGIN {printf "%.0f", (o + b) / p}')"
   done
 }
 
-qem() { # NAME FILE: approximation error at equal triangle counts (no timing ratio)
+# Approximation error at equal triangle counts: INFO lines (not ROW: no times, so run.sh leaves
+# them out of the table; docs/hal.md has them as a table).
+qem() { # NAME FILE
   local name=$1 file=$2 line
   [ -e "$file" ] || return 0
   "$BENCH_BIN/hal3_qem" "$file" | grep '^QEM' | while read -r line; do
-    printf 'ROW|hal3_error_%s_%s|-|meshoptimizer simplify|-|-|%s; at %s triangles (flintstone bound %s R), Hausdorff distance to the input / R (fl_hausdorff_meshes, certified upper ends): flintstone %s (input to approximation %s), QEM %s (%s; %s triangles)\n' \
+    printf 'INFO|hal3_error_%s_%s|meshoptimizer simplify|%s; at %s triangles (flintstone bound %s R), Hausdorff distance to the input / R (fl_hausdorff_meshes, certified upper ends): flintstone %s (input to approximation %s), QEM %s (%s; %s triangles)\n' \
       "$name" "$(field target "$line")" "$name" "$(field ours_tris "$line")" \
       "$(field ours_bound "$line")" "$(field ours_h "$line")" "$(field ours_h_in "$line")" \
       "$(field qem_h "$line")" "$(field qem_h_in "$line")" "$(field qem_tris "$line")"

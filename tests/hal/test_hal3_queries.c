@@ -251,6 +251,43 @@ static void test_hal3_inclusion_rays_along_every_axis_through_vertices_and_edges
     }
 }
 
+/* The ray walk stores node bounds as floats rounded outwards (hal3_contains.c). Far from the
+ * origin a float's spacing (1 at 1e7) is far larger than the mesh's detail (1e-3): every bound
+ * and query coordinate is rounded, and a skip must still be proven (a bound moved inwards past
+ * the query's rounding would cut off triangles the ray crosses). Property: on a noisy blob of
+ * size 1e-3 at (1e7, -3e6, 5e5) the answers for points near the surface (vertices moved by up to
+ * 1e-5, and vertices themselves) equal the brute force's. */
+static void test_hal3_inclusion_far_from_the_origin_equals_brute_force(void)
+{
+    fl_mesh m = hal3_blob(2, 1.0, 1.0, 1.0, 0.15);
+    const double off[3] = {1e7, -3e6, 5e5};
+    for (size_t v = 0; v < m.vertex_count; v++)
+        for (int k = 0; k < 3; k++) m.xyz[3 * v + k] = m.xyz[3 * v + k] * 1e-3 + off[k];
+    fl_hal3 hal;
+    fl_error err;
+    CHECK_STATUS(fl_hal3_build(&m, NULL, &hal, &err), FL_OK, &err);
+    size_t n = 1000, diff = 0, count[3] = {0, 0, 0};
+    double *q = malloc(3 * n * sizeof(double));
+    uint8_t *w = malloc(n);
+    for (size_t j = 0; j < n; j++) {
+        const double *a = V(&m, (uint32_t)(hal3_rand() * (double)m.vertex_count));
+        for (int k = 0; k < 3; k++)
+            q[3 * j + k] = a[k] + (j % 4 ? (hal3_rand() - 0.5) * 2e-5 : 0.0);
+    }
+    CHECK_STATUS(fl_hal3_contains(&hal, q, n, w, &err), FL_OK, &err);
+    for (size_t j = 0; j < n; j++) {
+        uint8_t b = brute_inside(&m, q + 3 * j);
+        diff += b != w[j];
+        count[b]++;
+    }
+    CHECK_MSG(diff == 0, "%zu of %zu answers differ from brute force", diff, n);
+    CHECK(count[0] > 0 && count[1] > 0 && count[2] > 0);
+    free(q);
+    free(w);
+    fl_hal3_free(&hal);
+    fl_mesh_free(&m);
+}
+
 int main(void)
 {
     static const fl_test_case cases[] = {
@@ -258,6 +295,7 @@ int main(void)
         FL_TEST_CASE(test_hal3_intersecting_pairs_equal_brute_force),
         FL_TEST_CASE(test_hal3_contains_rejects_non_finite_queries),
         FL_TEST_CASE(test_hal3_inclusion_rays_along_every_axis_through_vertices_and_edges),
+        FL_TEST_CASE(test_hal3_inclusion_far_from_the_origin_equals_brute_force),
     };
     return fl_test_run(cases, sizeof cases / sizeof cases[0]);
 }

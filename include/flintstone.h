@@ -1633,10 +1633,12 @@ fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mes
 enum { FL_HAL3_OUTSIDE = 0, FL_HAL3_INSIDE = 1, FL_HAL3_BOUNDARY = 2 };
 
 /* Point-in-polyhedron for the n points xyz[3k..3k+2]: FL_HAL3_BOUNDARY when the point lies on a
- * triangle (exactly), else the parity of the crossings of a ray in +x direction, symbolically
- * perturbed so that it misses every edge, decided with fl_orient2d/fl_orient3d. The flintstones
- * prune the triangles the ray cannot reach; the answers equal the brute-force test's. Errors:
- * FL_ERR_USAGE, FL_ERR_INPUT for a NaN/Inf query. */
+ * triangle (exactly), else the parity of the crossings of an axis-parallel ray (towards the
+ * nearest face of the bounding box), symbolically perturbed so that it misses every edge,
+ * decided with fl_orient2d/fl_orient3d. The tree's hierarchy, laid out once a call with exact
+ * (outward-rounded) coordinate bounds per node, prunes the triangles the ray cannot reach; the
+ * answers equal the brute-force test's. Errors: FL_ERR_USAGE, FL_ERR_NOMEM, FL_ERR_INPUT for a
+ * NaN/Inf query (the answers before it are written). */
 fl_status fl_hal3_contains(const fl_hal3 *hal, const double *xyz, size_t n, uint8_t *where,
                            fl_error *err);
 

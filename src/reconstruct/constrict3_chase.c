@@ -21,8 +21,10 @@
  *     removable, and everything deferred returns to the heap once a point joins the boundary.
  * Neither changes which removals are allowed (the shelling rules of constrict3.c), only their
  * order, so every guarantee (closed, manifold, genus 0, points never leave the boundary) holds.
- * The limit starts at CHASE_STALL and doubles after every stall that found no flip, so there
- * is at most one O(T) pass per CHASE_STALL removals, and a long fruitless chase makes O(log T). */
+ * The limit starts at CHASE_STALL, doubles after every stall that found no flip (a long
+ * fruitless chase makes O(log T) passes) and returns to CHASE_STALL after flips: keeping it
+ * large there made the chase too late on a resampled peanut (area 25.7 -> 97.3). At most one
+ * O(T) pass per CHASE_STALL removals; on the real point sets of docs/reconstruct3d.md, <= 12. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -109,6 +111,7 @@ int constrict3_chase_before(constrict3_state *s, constrict3_chase *c, constrict3
     if (constrict3_unlock(s, duplicate_of, push, ctx, e.key, &made, c0) != 0) return -1;
     *flips += made;
     if (made) {
+        c->limit = CHASE_STALL;
         /* e is still valid unless a flip rewrote its slot (then push() re-entered it) */
         if (!s->removed[e.tet] && e.version == s->version[e.tet] &&
             constrict3_heap_push(h, e) != 0)

@@ -817,7 +817,8 @@ typedef struct fl_reconstruction3 {
                             c1' >= c0) of the triangles the unlocking flips added; NaN:
                             Delaunay sufficed or augmentation was not tried */
     char reason[256];    /* empty when all_on_boundary is 1, else why points remain inside */
-    size_t flip_count;   /* 2-3 flips made to unlock constriction (0 when not locked) */
+    size_t flip_count;   /* 2-3 flips made to unlock constriction (0 when never locked or
+                            stalled, see docs/reconstruct3d.md) */
     size_t keep_missing; /* distinct kept triangles that are not on the final boundary */
 } fl_reconstruction3;
 

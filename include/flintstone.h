@@ -1450,7 +1450,8 @@ typedef enum fl_g1_scheme {
     FL_G1_SIX_SPLIT = 2    /* §9.8: six cubic micro patches a triangle (split at the edge
                             * midpoints and the centre), C1 inside each macro triangle, G1
                             * across macro edges by the least-displacement solve of step 5
-                            * (docs/smooth.md: what differs from the printed equations) */
+                            * where that system has a solution: not on some mirror-symmetric
+                            * edges (singular_edges; docs/smooth.md has where and why) */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */

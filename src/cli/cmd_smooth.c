@@ -20,8 +20,9 @@ static const char *usage_text =
     "Bézier paths, -o .xy the curve sampled N points a segment (--samples, default 16).\n"
     "MESH (.off .obj .ply .stl, closed, manifold, oriented): cubic Bézier triangles\n"
     "interpolating the vertices and estimated normals (§9.4). Schemes: three-split (§9.6,\n"
-    "G1), six-split (§9.8, G1, less oscillation; auto is the same), pn (the macro patches\n"
-    "of steps 1-3 = PN triangles, only C0). The two-split of §9.7 is not implemented.\n"
+    "G1; auto is the same), six-split (§9.8, less oscillation, G1 on most meshes but not\n"
+    "on some symmetric ones: check max_edge_normal_jump_deg), pn (the macro patches of\n"
+    "steps 1-3 = PN triangles, only C0). The two-split of §9.7 is not implemented.\n"
     "\n"
     "  --tangents W   curve tangent weighting (default length, §9.2 method 1)\n"
     "  --normals W    surface normal weighting (default area, §9.4 method 1)\n"
@@ -228,9 +229,10 @@ static int run_surface(const cli_common *c, const smooth_args *a)
     fl_g1_metrics metrics;
     fl_status st = fl_read_mesh(a->input, &m, &err);
     if (st) return cli_report(&err);
-    int scheme = FL_G1_SIX_SPLIT;
+    /* auto = three-split: the six-split is not G1 on every mesh (docs/smooth.md) */
+    int scheme = FL_G1_THREE_SPLIT;
     if (a->scheme && !strcmp(a->scheme, "pn")) scheme = FL_G1_MACRO;
-    if (a->scheme && !strcmp(a->scheme, "three-split")) scheme = FL_G1_THREE_SPLIT;
+    if (a->scheme && !strcmp(a->scheme, "six-split")) scheme = FL_G1_SIX_SPLIT;
     fl_g1_surface_options o = {.scheme = scheme,
                                .weighting = a->weighting,
                                .tension = a->tension};

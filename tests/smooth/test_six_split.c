@@ -127,6 +127,21 @@ static void test_six_split_is_g1_on_every_micro_and_macro_edge(void)
         CHECK_MSG(jump < 1e-7, "mesh %d: normal jump %g degrees", i, jump);
         CHECK_EQ_INT(flips, 0);
         CHECK_EQ_INT(unpaired, 0);
+        /* No degenerate corner at an edge midpoint: the spoke point next to it stays away
+         * (where step 5 has no solution it collapses onto m and G1 fails, docs/smooth.md);
+         * in patches (V, m, O) b021 - b030 is that spoke, b120 - b030 the half-edge; measured
+         * minimum 0.05 (random hull), 1e-13 on the failing subdivided icosahedron. */
+        double ratio = 1e9;
+        for (size_t p = 0; p < s.patch_count; p += 2) {
+            const double *c = s.ctrl + 30 * p;
+            double spoke = 0, half = 0;
+            for (int d = 0; d < 3; d++) {
+                spoke += (c[21 + d] - c[18 + d]) * (c[21 + d] - c[18 + d]);
+                half += (c[9 + d] - c[18 + d]) * (c[9 + d] - c[18 + d]);
+            }
+            ratio = fmin(ratio, sqrt(spoke / half));
+        }
+        CHECK_MSG(ratio > 0.01, "mesh %d: midpoint spoke / half-edge %g", i, ratio);
         /* the library's measure agrees with the oracle */
         fl_g1_metrics mt;
         fl_error err;

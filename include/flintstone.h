@@ -1447,7 +1447,12 @@ typedef enum fl_g1_scheme {
     FL_G1_THREE_SPLIT = 0, /* §9.6: three cubic micro patches a triangle; G1 to rounding on
                             * smooth meshes, not on every coarse one: measure it with
                             * fl_g1_surface_measure (docs/smooth.md has the numbers) */
-    FL_G1_MACRO = 1        /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
+    FL_G1_MACRO = 1,       /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
+    FL_G1_SIX_SPLIT = 2    /* §9.8: six cubic micro patches a triangle (split at the edge
+                            * midpoints and the centre), C1 inside each macro triangle, G1
+                            * across macro edges by the least-displacement solve of step 5
+                            * where that system has a solution: not on some mirror-symmetric
+                            * edges (singular_edges; docs/smooth.md has where and why) */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */
@@ -1462,7 +1467,8 @@ typedef struct fl_g1_surface_options {
  * in the order b300 b210 b201 b120 b111 b102 b030 b021 b012 b003 (b_ijk weights corner 0 by
  * i, corner 1 by j, corner 2 by k); its corners are the nodes corner[3p..3p+2],
  * counter-clockwise seen from outside. Node n < vertex_count is mesh vertex n; node
- * vertex_count + t is the split point of macro triangle t. macro[p] is the mesh triangle the
+ * vertex_count + t is the split point (centre) of macro triangle t; with the six-split, node
+ * vertex_count + triangle_count + e is the midpoint of macro edge e. macro[p] is the mesh triangle the
  * patch belongs to. Patches sharing an edge share its two end nodes. */
 typedef struct fl_g1_surface {
     size_t patch_count;
@@ -1477,8 +1483,10 @@ typedef struct fl_g1_surface {
                                  * right signs; decided exactly by fl_orient3d) */
     size_t orientation_failures; /* vertices where no repair was found (the surface folds
                                   * there), e.g. 3 on CGAL's hand.off */
-    size_t singular_edges;      /* macro edges where eq. 9.4 was dependent and the minimal
-                                 * displacement solution was taken */
+    size_t singular_edges;      /* three-split: macro edges where eq. 9.4 was dependent and
+                                 * the minimal displacement solution was taken; six-split:
+                                 * macro edges whose step-5 system was singular (their G1
+                                 * conditions may not hold) */
     size_t quadratic_edges;     /* macro edges whose boundary curve was made a degree-raised
                                  * quadratic because eq. 9.4 was (nearly) dependent with the
                                  * thesis's cubic curve (docs/smooth.md) */

@@ -62,4 +62,18 @@ fl_status g1_require_closed_mesh(const fl_mesh *mesh, fl_error *err);
 fl_status g1_repair_normals(const fl_mesh *mesh, double *normals, size_t *repairs, size_t *failures,
                             fl_error *err);
 
+/* Step 2 (§9.6): q projected on the tangent plane (p, n), a fraction `tension` of the way. */
+void g1_edge_point(const double *p, const double *n, const double *q, double tension,
+                   double *out);
+
+/* (e, f, g) with e d + f l + g r = 0 for d, l, r in the plane with normal n, scaled to
+ * f + g = -1; 0 when f + g = 0 (l and r on one side of d). See surface.c. */
+int g1_edge_coefficients(const double *d, const double *l, const double *r, const double *n,
+                         double *e, double *f, double *g);
+
+/* The six-split of §9.8 (six_split.c) over a checked mesh with final vertex normals: fills
+ * every patch of s (allocated for 6 patches a triangle) and s->singular_edges. */
+fl_status g1_six_split(const fl_mesh *m, const double *normals, double tension, fl_g1_surface *s,
+                       fl_error *err);
+
 #endif /* FL_SMOOTH_INTERNAL_H */

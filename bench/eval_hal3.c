@@ -19,6 +19,7 @@
 
 #include "closest_eval.h"
 #include "flintstone.h"
+#include "hal/hal3_oracle.h"
 
 static uint64_t rng = 0x853c49e6748fea9bull;
 static double uniform(void)
@@ -164,44 +165,11 @@ static int inside(const char *prefix, int reps)
     return rc;
 }
 
-/* ---- brute force: the +z ray of tests/hal/test_hal3_queries.c, every triangle ---- */
-
-static int brute_on(const double *a, const double *b, const double *c, const double *x)
-{
-    if (fl_orient3d(a, b, c, x) != 0) return 0;
-    for (int ax = 0; ax < 3; ax++) {
-        int i = (ax + 1) % 3, j = (ax + 2) % 3;
-        double A[2] = {a[i], a[j]}, B[2] = {b[i], b[j]}, C[2] = {c[i], c[j]}, X[2] = {x[i], x[j]};
-        int s = fl_orient2d(A, B, C);
-        if (s)
-            return fl_orient2d(A, B, X) * s >= 0 && fl_orient2d(B, C, X) * s >= 0 &&
-                   fl_orient2d(C, A, X) * s >= 0;
-    }
-    return 0;
-}
-
-/* orient2d in the xy-plane of (a, b, x + (e, e^2)) */
-static int pert(const double *a, const double *b, const double *x)
-{
-    int o = fl_orient2d(a, b, x);
-    if (o) return o;
-    if (a[1] != b[1]) return a[1] > b[1] ? 1 : -1;
-    return b[0] > a[0] ? 1 : b[0] < a[0] ? -1 : 0;
-}
+/* ---- brute force: the +z ray of tests/hal/hal3_oracle.h, every triangle ---- */
 
 static uint8_t brute_inside(const fl_mesh *m, const double *x)
 {
-    int parity = 0;
-    for (size_t t = 0; t < m->triangle_count; t++) {
-        const double *a = m->xyz + 3 * (size_t)m->tri[3 * t];
-        const double *b = m->xyz + 3 * (size_t)m->tri[3 * t + 1];
-        const double *c = m->xyz + 3 * (size_t)m->tri[3 * t + 2];
-        if (brute_on(a, b, c, x)) return 2;
-        int s = fl_orient2d(a, b, c); /* xy-projection */
-        if (!s || pert(a, b, x) != s || pert(b, c, x) != s || pert(c, a, x) != s) continue;
-        parity ^= fl_orient3d(a, b, c, x) * s > 0;
-    }
-    return (uint8_t)parity;
+    return hal3_oracle_inside(m, x);
 }
 
 static uint8_t *read_answers(const char *path, size_t *n)

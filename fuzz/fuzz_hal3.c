@@ -15,6 +15,7 @@
  *  - fl_hal3_intersect == all pairs tested with fl_triangles_intersect (src/mesh, exact). */
 #include "fuzz_common.h"
 #include "mesh/intersect.h"
+#include "hal/hal3_oracle.h"
 #include "sweep/sweep_oracle.h"
 
 #define H3_V 14
@@ -23,20 +24,6 @@
 static const double *h3_v(const fl_mesh *m, size_t t, int k)
 {
     return m->xyz + 3 * (size_t)m->tri[3 * t + (size_t)k];
-}
-
-static int h3_on_triangle(const double *a, const double *b, const double *c, const double *x)
-{
-    if (fl_orient3d(a, b, c, x) != 0) return 0;
-    for (int ax = 0; ax < 3; ax++) {
-        int i = (ax + 1) % 3, j = (ax + 2) % 3;
-        double A[2] = {a[i], a[j]}, B[2] = {b[i], b[j]}, C[2] = {c[i], c[j]}, X[2] = {x[i], x[j]};
-        int s = fl_orient2d(A, B, C);
-        if (s)
-            return fl_orient2d(A, B, X) * s >= 0 && fl_orient2d(B, C, X) * s >= 0 &&
-                   fl_orient2d(C, A, X) * s >= 0;
-    }
-    return 0;
 }
 
 /* Crossings of segment x-o with the triangles; -1 when some contact is degenerate. */
@@ -62,7 +49,7 @@ static int h3_crossings(const fl_mesh *m, const double *x, const double *o)
 static int h3_brute_inside(const fl_mesh *m, const double *x, double far)
 {
     for (size_t t = 0; t < m->triangle_count; t++)
-        if (h3_on_triangle(h3_v(m, t, 0), h3_v(m, t, 1), h3_v(m, t, 2), x))
+        if (hal3_oracle_on_triangle(h3_v(m, t, 0), h3_v(m, t, 1), h3_v(m, t, 2), x))
             return FL_HAL3_BOUNDARY;
     static const double dir[8][3] = {{1, 0.377, 0.719},   {-0.531, 1, 0.293}, {0.613, -0.457, 1},
                                      {-1, -0.211, 0.871}, {0.143, -1, -0.659}, {0.91, 0.37, -1},
@@ -128,7 +115,7 @@ static void h3_check_tree(const fl_hal3 *h, const fl_mesh *m, double scale)
                           "node %d excludes a corner of face %u", (int)a, nd->face);
             /* the rounded centroid is a point of the triangle only when exactly on it (a
              * triangle with a far vertex has its rounded centroid across a corner plane) */
-            FZ_ASSERT(!h3_on_triangle(v[0], v[1], v[2], g) ||
+            FZ_ASSERT(!hal3_oracle_on_triangle(v[0], v[1], v[2], g) ||
                           fl_hal3_flintstone_may_contain(h, (uint32_t)a, g),
                       "node %d excludes the centroid of face %u", (int)a, nd->face);
         }

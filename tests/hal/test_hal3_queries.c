@@ -5,6 +5,7 @@
 #include "fl_test.h"
 #include "hal/hal3_internal.h"
 #include "hal3_meshes.h"
+#include "hal3_oracle.h"
 #include "mesh/intersect.h"
 
 static const double *V(const fl_mesh *m, uint32_t v)
@@ -12,45 +13,9 @@ static const double *V(const fl_mesh *m, uint32_t v)
     return m->xyz + 3 * (size_t)v;
 }
 
-static int brute_on(const double *a, const double *b, const double *c, const double *x)
-{
-    if (fl_orient3d(a, b, c, x) != 0) return 0;
-    for (int ax = 0; ax < 3; ax++) {
-        int i = (ax + 1) % 3, j = (ax + 2) % 3;
-        double A[2] = {a[i], a[j]}, B[2] = {b[i], b[j]}, C[2] = {c[i], c[j]}, X[2] = {x[i], x[j]};
-        int s = fl_orient2d(A, B, C);
-        if (s)
-            return fl_orient2d(A, B, X) * s >= 0 && fl_orient2d(B, C, X) * s >= 0 &&
-                   fl_orient2d(C, A, X) * s >= 0;
-    }
-    return 0;
-}
-
-/* orient2d in the xy-plane of (a, b, x + (e, e^2)) */
-static int pert(const double *a, const double *b, const double *x)
-{
-    double A[2] = {a[0], a[1]}, B[2] = {b[0], b[1]}, X[2] = {x[0], x[1]};
-    int o = fl_orient2d(A, B, X);
-    if (o) return o;
-    if (A[1] != B[1]) return A[1] > B[1] ? 1 : -1;
-    return B[0] > A[0] ? 1 : B[0] < A[0] ? -1 : 0;
-}
-
-/* Ray in +z: crossing when the perturbed xy-projection is inside and the plane is above x. */
 static uint8_t brute_inside(const fl_mesh *m, const double *x)
 {
-    int parity = 0;
-    for (size_t t = 0; t < m->triangle_count; t++) {
-        const double *a = V(m, m->tri[3 * t]), *b = V(m, m->tri[3 * t + 1]),
-                     *c = V(m, m->tri[3 * t + 2]);
-        if (brute_on(a, b, c, x)) return FL_HAL3_BOUNDARY;
-        double A[2] = {a[0], a[1]}, B[2] = {b[0], b[1]}, C[2] = {c[0], c[1]};
-        int s = fl_orient2d(A, B, C);
-        if (!s || pert(a, b, x) != s || pert(b, c, x) != s || pert(c, a, x) != s) continue;
-        /* n_z has the sign s; x is below the plane (fl_orient3d > 0 means on the -n side) */
-        parity ^= fl_orient3d(a, b, c, x) * s > 0;
-    }
-    return parity ? FL_HAL3_INSIDE : FL_HAL3_OUTSIDE;
+    return hal3_oracle_inside(m, x);
 }
 
 static fl_mesh query_mesh(int i)

@@ -60,7 +60,10 @@ static void approximation(const h2_set *s, size_t k, fl_hal2 *hals)
                "measured=%.3e certified=%.3e seconds=%.6f\n",
                h2_fractions[f], vertices, original, measured, certified, t);
     }
-    for (uint32_t level = 3; level <= 15; level += 3) {
+    /* Every level until all 20 rings are back to their original vertices (hal.depth). */
+    uint32_t depth = 0;
+    for (size_t i = 0; i < k; i++) depth = hals[i].depth > depth ? hals[i].depth : depth;
+    for (uint32_t level = 0; level <= depth; level++) {
         size_t vertices = 0;
         double measured = 0, certified = 0;
         for (size_t i = 0; i < k; i++) {

@@ -38,5 +38,13 @@ o=$(med INTERSECT/flintstone); p=$(med INTERSECT/geos-prepared-intersects); q=$(
 printf 'ROW|hal2_intersect_632_pairs|%s|GEOS PreparedIntersects|%s|%s|do the boundaries meet, 632 ring pairs with overlapping bounding boxes among the 300 largest rings (%s meet), %s; GEOS plain Intersects %s s (ratio %s); GEOS time includes preparing, ours excludes the tree build (%s s for the 300 trees; with it the ratio is %s)\n' \
   "$o" "$p" "$(ratio "$o" "$p")" "$(field meeting "$(grep '^INTERSECT method=flintstone' <<<"$ours")")" \
   "$(agree pairs)" "$q" "$(ratio "$o" "$q")" "$b" "$(ratio "$(awk -v o="$o" -v b="$b" 'BEGIN {print o + b}')" "$p")"
-# The approximation curve goes to docs/hal.md; the table rows are printed for the record.
+# The approximation curve (error against vertices, like thesis Fig. 7.6) goes to
+# bench/out/hal2-approx.svg (docs/img/hal2-approx.svg is a copy) and its table to docs/hal.md; the
+# lines are printed for the record. The ERROR line goes to stdout, where run.sh collects rows.
 grep '^APPROX' <<<"$both" | sed 's/^/NOTE|hal2|/' >&2
+here=$(cd "$(dirname "$0")/.." && pwd)
+if grep '^APPROX' <<<"$both" | python3 "$here/tools/plot_hal2_approx.py" >"$here/out/hal2-approx.svg"; then
+  echo "NOTE|hal2|approximation plot written to $here/out/hal2-approx.svg" >&2
+else
+  echo "ERROR|hal2|approximation plot failed"
+fi

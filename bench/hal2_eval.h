@@ -38,7 +38,8 @@ static void h2_push(h2_set *s, size_t *cap, const double *xy, size_t n)
 {
     if (n > 1 && xy[0] == xy[2 * (n - 1)] && xy[1] == xy[2 * (n - 1) + 1]) n--;
     if (n < 4) return;
-    if (s->count == *cap) s->rings = realloc(s->rings, (*cap = *cap ? 2 * *cap : 256) * sizeof *s->rings);
+    if (s->count == *cap)
+        s->rings = realloc(s->rings, (*cap = *cap ? 2 * *cap : 256) * sizeof *s->rings);
     h2_ring *r = &s->rings[s->count++];
     r->n = n;
     r->xy = malloc(2 * n * sizeof(double));
@@ -82,7 +83,8 @@ static int h2_load(const char *path, size_t count, h2_set *s)
     fclose(f);
     qsort(s->rings, s->count, sizeof *s->rings, h2_by_size);
     if (count && count < s->count) {
-        for (size_t i = count; i < s->count; i++) free(s->rings[i].xy);
+        for (size_t i = count; i < s->count; i++)
+            free(s->rings[i].xy);
         s->count = count;
     }
     return 0;
@@ -90,7 +92,8 @@ static int h2_load(const char *path, size_t count, h2_set *s)
 
 static void h2_free(h2_set *s)
 {
-    for (size_t i = 0; i < s->count; i++) free(s->rings[i].xy);
+    for (size_t i = 0; i < s->count; i++)
+        free(s->rings[i].xy);
     free(s->rings);
 }
 
@@ -168,9 +171,8 @@ static size_t h2_pairs(const h2_set *s, size_t k, uint32_t **out)
 /* The tolerances of the approximation curve, as fractions of each ring's bbox diagonal: the
  * table of docs/hal.md uses 0.1, 0.03, ..., 0.0003; the others fill in the plot
  * (bench/tools/plot_hal2_approx.py). */
-static const double h2_fractions[] = {0.3,   0.2,   0.1,    0.05,   0.03,   0.02,  0.01,
-                                      0.005, 0.003, 0.002,  0.001,  0.0005, 0.0003, 0.0002,
-                                      0.0001};
+static const double h2_fractions[] = {0.3,   0.2,   0.1,   0.05,   0.03,   0.02,   0.01,  0.005,
+                                      0.003, 0.002, 0.001, 0.0005, 0.0003, 0.0002, 0.0001};
 #define H2_FRACTIONS (sizeof h2_fractions / sizeof h2_fractions[0])
 
 #endif

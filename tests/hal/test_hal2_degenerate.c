@@ -30,10 +30,9 @@ static size_t check_pairs_one_way(const fl_polygon *a, const fl_polygon *b)
     CHECK_EQ_INT(mismatches, 0);
     CHECK_EQ_INT(first.count, k > 0);
     if (first.count == 1) /* the early exit reports a real pair */
-        CHECK(oracle_segments_meet(a->xy + 2 * first.pairs[0],
-                                   a->xy + 2 * ring_next(a, first.pairs[0]),
-                                   b->xy + 2 * first.pairs[1],
-                                   b->xy + 2 * ring_next(b, first.pairs[1])));
+        CHECK(oracle_segments_meet(
+            a->xy + 2 * first.pairs[0], a->xy + 2 * ring_next(a, first.pairs[0]),
+            b->xy + 2 * first.pairs[1], b->xy + 2 * ring_next(b, first.pairs[1])));
     fl_hal2_pairs_free(&all);
     fl_hal2_pairs_free(&first);
     fl_hal2_free(&ha);
@@ -60,8 +59,7 @@ static fl_polygon one_ring(test_poly *t, const double *xy, size_t n)
  * (x0, y0): axis-parallel [x0, x0 + s] x [y0, y0 + s], or with `diamond` set the diamond with
  * corners (x0, y0), (x0 + s, y0 - s), (x0 + 2s, y0), (x0 + s, y0 + s). Coordinates are dyadic,
  * hence exact, for dyadic x0, y0, s and per a power of two. */
-static size_t subdivided_square(double *xy, double x0, double y0, double s, size_t per,
-                                int diamond)
+static size_t subdivided_square(double *xy, double x0, double y0, double s, size_t per, int diamond)
 {
     static const double dir[2][4][2] = {{{1, 0}, {0, 1}, {-1, 0}, {0, -1}},
                                         {{1, -1}, {1, 1}, {-1, 1}, {-1, -1}}};
@@ -214,9 +212,10 @@ static void check_inclusion(const fl_polygon *p, double lo, double hi, unsigned 
         for (size_t j = 0; j < side; j++)
             q[2 * m] = lo + (double)i / 2, q[2 * m + 1] = lo + (double)j / 2, m++;
     unsigned long long rng = seed;
-    for (; m < n; m++)
-        q[2 * m] = lo + (hi - lo) * fl_test_rand01(&rng),
+    for (; m < n; m++) {
+        q[2 * m] = lo + (hi - lo) * fl_test_rand01(&rng);
         q[2 * m + 1] = lo + (hi - lo) * fl_test_rand01(&rng);
+    }
     uint8_t *where = malloc(n);
     CHECK_STATUS(fl_hal2_contains(&h, q, n, where, &err), FL_OK, &err);
     size_t bad = 0;

@@ -48,10 +48,16 @@ static size_t check_pairs(const fl_polygon *a, const fl_polygon *b)
     return k;
 }
 
+/* Coordinates are multiplied by this power of two (exact, so contacts stay contacts) to run the
+ * same configurations where squared distances overflow or underflow. */
+static double ring_scale = 1;
+
 static fl_polygon one_ring(test_poly *t, const double *xy, size_t n)
 {
     tp_init(t);
     tp_add_ring(t, xy, n, 0);
+    for (size_t k = 0; k < 2 * n; k++)
+        t->pg.xy[k] *= ring_scale;
     return t->pg;
 }
 
@@ -75,7 +81,7 @@ static size_t subdivided_square(double *xy, double x0, double y0, double s, size
 
 /* Each configuration touches in exactly the way its name says and nowhere else; the expected
  * pair count follows from the picture and is also what brute force says. */
-static void test_hal2_touching_polygons_intersect_exactly_like_brute_force(void)
+static void touching_polygons(void)
 {
     test_poly ta, tb;
     fl_polygon a, b;
@@ -118,6 +124,58 @@ static void test_hal2_touching_polygons_intersect_exactly_like_brute_force(void)
     CHECK_EQ_INT(check_pairs(&a, &b), 2);
     fl_polygon_free(&b);
     fl_polygon_free(&a);
+}
+
+static void test_hal2_touching_polygons_intersect_exactly_like_brute_force(void)
+{
+    touching_polygons();
+}
+
+/* ... also at 2^600 (squared distances overflow to Inf) and 2^-1000 (they underflow; the ulp
+ * steps become subnormal but stay exact): pruning weakens, answers must not change. */
+static void test_hal2_touching_polygons_at_extreme_scales(void)
+{
+    const double scales[] = {0x1p600, 0x1p-1000};
+    for (size_t k = 0; k < 2; k++) {
+        ring_scale = scales[k];
+        touching_polygons();
+    }
+    ring_scale = 1;
+}
+
+/* The root pair is two distinct points and the tree has n - 2 nodes (Thm. 7.2) also where
+ * squared distances underflow (2^-1000) or overflow (2^600): the farthest-pair sweep on the
+ * smallest enclosing circle compared underflowed squared distances, all 0, and picked one vertex
+ * twice (then the tiny triangle's tree had 2 nodes and one edge was reported twice). */
+static void test_hal2_root_pair_is_a_chord_at_extreme_scales(void)
+{
+    const double scales[] = {1, 0x1p600, 0x1p-1000, 0x1p-1060};
+    for (size_t k = 0; k < 4; k++)
+        for (unsigned long long seed = 0; seed < 6; seed++) {
+            unsigned long long rng = seed + 11;
+            double xy[2 * 40];
+            size_t n = seed == 0 ? 3 : 5 * seed + 3;
+            if (seed == 0) { /* the triangle of the touching test */
+                const double tri[] = {0.5, 1, 1, 2, 0, 2};
+                memcpy(xy, tri, sizeof tri);
+            } else {
+                star_ring(xy, n, 0, 0, 64, &rng);
+                for (size_t i = 0; i < 2 * n; i++)
+                    xy[i] = round(xy[i]); /* integers: exact after scaling */
+            }
+            ring_scale = scales[k];
+            test_poly t;
+            fl_polygon p = one_ring(&t, xy, n);
+            ring_scale = 1;
+            fl_hal2 h;
+            fl_error err;
+            CHECK_STATUS(fl_hal2_build(&p, NULL, &h, &err), FL_OK, &err);
+            const double *a = p.xy + 2 * h.rings[0].root[0], *b = p.xy + 2 * h.rings[0].root[1];
+            CHECK(a[0] != b[0] || a[1] != b[1]);
+            CHECK_EQ_INT(h.node_count, n - 2);
+            fl_hal2_free(&h);
+            fl_polygon_free(&p);
+        }
 }
 
 /* The same contacts deep in the trees: the touching edges are single edges of long collinear
@@ -273,6 +331,8 @@ static void test_hal2_intersection_with_repeated_vertices(void)
 }
 
 FL_TEST_MAIN(FL_TEST_CASE(test_hal2_touching_polygons_intersect_exactly_like_brute_force),
+             FL_TEST_CASE(test_hal2_touching_polygons_at_extreme_scales),
+             FL_TEST_CASE(test_hal2_root_pair_is_a_chord_at_extreme_scales),
              FL_TEST_CASE(test_hal2_touching_deep_in_the_trees),
              FL_TEST_CASE(test_hal2_touching_random_stars),
              FL_TEST_CASE(test_hal2_inclusion_with_repeated_vertices_and_shared_edges),

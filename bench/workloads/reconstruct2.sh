@@ -48,7 +48,7 @@ row() { # OURS PEER PEERNAME NOTES
   o=$(med "$1")
   p=$(med "$2")
   printf 'ROW|reconstruct2_%s|%s|%s|%s|%s|ours (%s): %s%s; %s: %s%s\n' "$4" "$o" "$3" "$p" \
-    "$(awk -v o="$o" -v p="$p" 'BEGIN {printf "%.2f", o / p}')" "$1" "${quality[$1]}" \
+    - "$1" "${quality[$1]}" \
     "${symdiff[$1]:-}" "$2" "${quality[$2]:-}" "${symdiff[$2]:-}"
 }
 row constriction-gamma cgal-alpha-shape-optimal "CGAL Alpha_shape_2 (optimal alpha)" countries50m

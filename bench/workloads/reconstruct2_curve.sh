@@ -23,7 +23,8 @@ runs() { # KEY ROUNDS EDGES_DIR PROGRAM ARGS...: per-method seconds, scores of t
   for ((r = 0; r < rounds; r++)); do
     d=-
     ((r == rounds - 1)) && d=$dir
-    out=$("$BENCH_BIN/$prog" "$file" 3 "$d" "$@") || { echo "ERROR|reconstruct2_curve|$prog failed"; return 0; }
+    out=$("$BENCH_BIN/$prog" "$file" 3 "$d" "$@") ||
+      { echo "ERROR|reconstruct2_curve|$prog failed"; return 0; }
     while read -r line; do
       m=$(field method "$line")
       secs[$key/$m]+="$(field seconds "$line")"$'\n'
@@ -47,7 +48,8 @@ row() { # NAME OURS PEER PEERNAME EXTRA
 }
 
 for n in $sizes; do
-  label=$(awk -v n="$n" 'BEGIN {e = int(log(n) / log(10) + 1e-9); printf (n == 10 ^ e) ? "1e%d" : "%d", (n == 10 ^ e) ? e : n}')
+  label=$(awk -v n="$n" 'BEGIN {e = int(log(n) / log(10) + 1e-9)
+                                if (n == 10 ^ e) printf "1e%d", e; else printf "%d", n}')
   file=$BENCH_DATA/curve_$n.xy
   dir=$BENCH_DATA/curve_${n}_edges
   rm -rf "$dir"

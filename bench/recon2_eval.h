@@ -15,7 +15,12 @@
  *   exact      1 when the method's edges are exactly the ring's
  * The program prints, per method, one line:
  *   RESULT method=<m> cases=<n> seconds=<total time of the method's calls> recall=<mean>
- *          precision=<mean> on_boundary=<mean> polygon=<fraction> exact=<fraction> */
+ *          precision=<mean> on_boundary=<mean> polygon=<fraction> exact=<fraction>
+ * Given an output directory, each program also writes every method's edges to
+ * <dir>/<method>.edges (r2_edges_open / r2_edges_write), so that one scorer
+ * (bench/tools/recon2_symdiff.c) measures the area of every method's result against the true
+ * ring with the same code. Format, per case in load order: a line "case <k> <m>", then m lines
+ * "<a> <b>" (indices into the case's shuffled points). */
 #ifndef FL_BENCH_RECON2_EVAL_H
 #define FL_BENCH_RECON2_EVAL_H
 
@@ -36,7 +41,7 @@ typedef struct r2_set {
     r2_case *cases;
 } r2_set;
 
-static int r2_cmp_xy(const void *a, const void *b)
+static inline int r2_cmp_xy(const void *a, const void *b)
 {
     const double *p = (const double *)a, *q = (const double *)b;
     if (p[0] != q[0]) return p[0] < q[0] ? -1 : 1;
@@ -46,7 +51,7 @@ static int r2_cmp_xy(const void *a, const void *b)
 
 /* Adds a ring if it has min_points points, all distinct (rings with repeated points are
  * skipped: their truth is not a simple polygon through distinct points), and not collinear. */
-static void r2_add_ring(r2_set *s, const double *ring, size_t n, size_t min_points,
+static inline void r2_add_ring(r2_set *s, const double *ring, size_t n, size_t min_points,
                         uint64_t *seed)
 {
     if (n > 1 && ring[0] == ring[2 * (n - 1)] && ring[1] == ring[2 * (n - 1) + 1]) n--;
@@ -91,7 +96,7 @@ static void r2_add_ring(r2_set *s, const double *ring, size_t n, size_t min_poin
 }
 
 /* Reads the rings of path; returns 0 on success. */
-static int r2_load(const char *path, size_t min_points, r2_set *s)
+static inline int r2_load(const char *path, size_t min_points, r2_set *s)
 {
     FILE *f = fopen(path, "r");
     if (!f) {
@@ -123,7 +128,7 @@ static int r2_load(const char *path, size_t min_points, r2_set *s)
     return 0;
 }
 
-static void r2_free(r2_set *s)
+static inline void r2_free(r2_set *s)
 {
     for (size_t i = 0; i < s->count; i++) {
         free(s->cases[i].xy);
@@ -137,14 +142,15 @@ typedef struct r2_score {
     double seconds, recall, precision, on_boundary, polygon, exact;
 } r2_score;
 
-static size_t r2_find(size_t *parent, size_t x)
+static inline size_t r2_find(size_t *parent, size_t x)
 {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
 }
 
 /* Scores one case: `edges` holds m undirected edges (2 indices each) of the method's boundary. */
-static void r2_score_case(r2_score *sc, const r2_case *c, const uint32_t *edges, size_t m)
+static inline void r2_score_case(r2_score *sc, const r2_case *c, const uint32_t *edges,
+                                 size_t m)
 {
     size_t n = c->n, hits = 0, touched = 0;
     size_t *degree = (size_t *)calloc(n, sizeof(size_t));
@@ -174,13 +180,31 @@ static void r2_score_case(r2_score *sc, const r2_case *c, const uint32_t *edges,
     free(parent);
 }
 
-static void r2_print(const r2_score *sc, const char *method)
+static inline void r2_print(const r2_score *sc, const char *method)
 {
     double k = sc->cases ? (double)sc->cases : 1;
     printf("RESULT method=%s cases=%zu seconds=%.6f recall=%.4f precision=%.4f on_boundary=%.4f "
            "polygon=%.4f exact=%.4f\n",
            method, sc->cases, sc->seconds, sc->recall / k, sc->precision / k, sc->on_boundary / k,
            sc->polygon / k, sc->exact / k);
+}
+
+/* <dir>/<method>.edges for writing, or NULL when dir is NULL, empty or "-". */
+static inline FILE *r2_edges_open(const char *dir, const char *method)
+{
+    if (!dir || !dir[0] || (dir[0] == '-' && !dir[1])) return NULL;
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s.edges", dir, method);
+    FILE *f = fopen(path, "w");
+    if (!f) fprintf(stderr, "cannot write %s\n", path);
+    return f;
+}
+
+static inline void r2_edges_write(FILE *f, size_t k, const uint32_t *edges, size_t m)
+{
+    if (!f) return;
+    fprintf(f, "case %zu %zu\n", k, m);
+    for (size_t e = 0; e < m; e++) fprintf(f, "%u %u\n", edges[2 * e], edges[2 * e + 1]);
 }
 
 #endif

@@ -136,3 +136,20 @@ put("render", "raster_mesh", bytes([1, 15, 15, 20, 140, 3, 4]) + grid(0, 0, 0, 4
     + tet_tri + bytes([0x33]) + grid(1, 2, 3, 4) + bytes([1]) + grid(0, 0, 0, 2) + bytes([1]) + grid(5, 5, 5))
 put("render", "raster_ortho", bytes([1, 0x80 | 9, 0x80 | 7, 0, 128, 2, 1, 0, 1, 2]) + grid(0, 0, 0, 4, 0, 0, 0, 4, 0)
     + bytes([0x30, 0, 0]))
+
+# ---- .bez reader (fuzz_read_bez: the file itself, no selector byte) ----
+def bez_net(corners, pts):
+    """One patch per corner triple; control points on the flat triangle (b_ijk = (i a + j b + k c) / 3)."""
+    out = "flintstone-bez 1\n# seed\npatches %d\n" % len(corners)
+    for c in corners:
+        out += "%d %d %d\n" % c
+        a, b, d = (pts[k] for k in c)
+        for i, j, k in [(3,0,0),(2,1,0),(2,0,1),(1,2,0),(1,1,1),(1,0,2),(0,3,0),(0,2,1),(0,1,2),(0,0,3)]:
+            out += " ".join(repr((i * a[t] + j * b[t] + k * d[t]) / 3) for t in range(3)) + "\n"
+    return out
+tet_pts = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
+put("read_bez", "tet", bez_net([(0, 2, 1), (0, 1, 3), (0, 3, 2), (1, 2, 3)], tet_pts))
+put("read_bez", "one_patch", bez_net([(0, 1, 2)], tet_pts))
+put("read_bez", "repeated_corner", bez_net([(0, 0, 1)], tet_pts))
+put("read_bez", "huge_count", "flintstone-bez 1\npatches 268435455\n0 1 2\n0 0 0\n")
+put("read_bez", "bad_header", "flintstone-bez 2\npatches 1\n")

@@ -3,7 +3,7 @@
 // alpha whose shape has one solid component with every point on its boundary or inside. Its
 // boundary edges (REGULAR edges) are scored like ours. Timed: building the alpha shape (its
 // Delaunay triangulation and alpha spectrum) plus finding the optimal alpha.
-//   cgal_alpha2 RINGS.xy [MIN_POINTS]
+//   cgal_alpha2 RINGS.xy [MIN_POINTS [EDGES_DIR|-]]   (EDGES_DIR: bench/recon2_eval.h)
 #include <CGAL/Alpha_shape_2.h>
 #include <CGAL/Alpha_shape_face_base_2.h>
 #include <CGAL/Alpha_shape_vertex_base_2.h>
@@ -28,12 +28,13 @@ typedef CGAL::Alpha_shape_2<Dt> Alpha;
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        std::fprintf(stderr, "usage: cgal_alpha2 RINGS.xy [MIN_POINTS]\n");
+        std::fprintf(stderr, "usage: cgal_alpha2 RINGS.xy [MIN_POINTS [EDGES_DIR|-]]\n");
         return 2;
     }
     r2_set s;
     if (r2_load(argv[1], argc > 2 ? (size_t)std::atol(argv[2]) : 20, &s)) return 1;
     r2_score sc = {};
+    FILE *out = r2_edges_open(argc > 3 ? argv[3] : nullptr, "cgal-alpha-shape-optimal");
     for (size_t k = 0; k < s.count; k++) {
         const r2_case &c = s.cases[k];
         std::vector<std::pair<K::Point_2, uint32_t>> pts;
@@ -53,7 +54,9 @@ int main(int argc, char **argv)
             edges.push_back(f->vertex(Dt::ccw(i))->info());
         }
         r2_score_case(&sc, &c, edges.data(), edges.size() / 2);
+        r2_edges_write(out, k, edges.data(), edges.size() / 2);
     }
+    if (out) std::fclose(out);
     r2_print(&sc, "cgal-alpha-shape-optimal");
     r2_free(&s);
     return 0;

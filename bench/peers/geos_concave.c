@@ -2,7 +2,9 @@
  * of the points as a MultiPoint, without holes, at edge-length ratio 0 (the most concave hull
  * GEOS makes) and 0.1. The hull's shell is mapped back to the input points by coordinates (GEOS
  * keeps them exactly) and scored like ours. Timed: making the MultiPoint and the hull.
- *   geos_concave RINGS.xy [MIN_POINTS] */
+ *   geos_concave RINGS.xy [MIN_POINTS [EDGES_DIR|- [RATIO]]]   (EDGES_DIR: bench/recon2_eval.h)
+ * RATIO: only that length ratio (the closed-curve workload runs 0 alone: 1e5 points take GEOS
+ * tens of seconds). */
 #define _POSIX_C_SOURCE 200809L
 #include <geos_c.h>
 #include <stdarg.h>
@@ -43,14 +45,16 @@ static long lookup(const double *sorted_xyi, size_t n, double x, double y)
     return -1;
 }
 
-static int run(const r2_set *s, double ratio, const char *name)
+static int run(const r2_set *s, double ratio, const char *name, const char *dir)
 {
     r2_score sc = {0};
+    FILE *out = r2_edges_open(dir, name);
     for (size_t k = 0; k < s->count; k++) {
         const r2_case *c = &s->cases[k];
         double t0 = now();
         GEOSGeometry **pts = malloc(c->n * sizeof *pts);
-        for (size_t i = 0; i < c->n; i++) pts[i] = GEOSGeom_createPointFromXY(c->xy[2 * i], c->xy[2 * i + 1]);
+        for (size_t i = 0; i < c->n; i++)
+            pts[i] = GEOSGeom_createPointFromXY(c->xy[2 * i], c->xy[2 * i + 1]);
         GEOSGeometry *mp = GEOSGeom_createCollection(GEOS_MULTIPOINT, pts, (unsigned)c->n);
         free(pts);
         GEOSGeometry *hull = GEOSConcaveHull(mp, ratio, 0);
@@ -84,10 +88,12 @@ static int run(const r2_set *s, double ratio, const char *name)
             free(sorted);
         }
         r2_score_case(&sc, c, edges, m);
+        r2_edges_write(out, k, edges, m);
         free(edges);
         if (hull) GEOSGeom_destroy(hull);
         GEOSGeom_destroy(mp);
     }
+    if (out) fclose(out);
     r2_print(&sc, name);
     return 0;
 }
@@ -95,13 +101,21 @@ static int run(const r2_set *s, double ratio, const char *name)
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        fprintf(stderr, "usage: geos_concave RINGS.xy [MIN_POINTS]\n");
+        fprintf(stderr, "usage: geos_concave RINGS.xy [MIN_POINTS [EDGES_DIR|- [RATIO]]]\n");
         return 2;
     }
     r2_set s;
     if (r2_load(argv[1], argc > 2 ? (size_t)atol(argv[2]) : 20, &s)) return 1;
     initGEOS(on_geos_message, on_geos_message);
-    int rc = run(&s, 0.0, "geos-concave-hull-0") || run(&s, 0.1, "geos-concave-hull-0.1");
+    const char *dir = argc > 3 ? argv[3] : NULL;
+    int rc;
+    if (argc > 4) {
+        char name[64];
+        snprintf(name, sizeof name, "geos-concave-hull-%s", argv[4]);
+        rc = run(&s, atof(argv[4]), name, dir);
+    } else {
+        rc = run(&s, 0.0, "geos-concave-hull-0", dir) || run(&s, 0.1, "geos-concave-hull-0.1", dir);
+    }
     finishGEOS();
     r2_free(&s);
     return rc;

@@ -75,11 +75,19 @@ static fl_status read_patches(bez_reader *r, fl_g1_surface *out, fl_error *err)
         return fl_fail(err, FL_ERR_INPUT, r->path, r->line, "expected 'flintstone-bez 1'");
     if (!next_line(r) || sscanf(r->buf, "patches %zu", &n) != 1 || n == 0 || n > (1u << 28))
         return fl_fail(err, FL_ERR_INPUT, r->path, r->line, "expected 'patches N', N >= 1");
-    out->ctrl = fl_alloc_array(n, 30 * sizeof(double));
-    out->corner = fl_alloc_array(n, 3 * sizeof(uint32_t));
-    if (!out->ctrl || !out->corner) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-    out->patch_count = n;
+    /* The arrays grow with the patches actually read, so a short file claiming 2^28 patches
+     * does not reserve 64 GB up front (fuzz_read_bez). */
+    size_t cap = 0;
     for (size_t p = 0; p < n; p++) {
+        if (p == cap) {
+            cap = cap ? (cap > n / 2 ? n : 2 * cap) : (n < 256 ? n : 256);
+            double *ctrl = fl_realloc_array(out->ctrl, cap, 30 * sizeof(double));
+            if (ctrl) out->ctrl = ctrl;
+            uint32_t *corner = fl_realloc_array(out->corner, cap, 3 * sizeof(uint32_t));
+            if (corner) out->corner = corner;
+            if (!ctrl || !corner) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+        }
+        out->patch_count = p + 1;
         double c[3];
         if (!next_line(r) || parse_numbers(r->buf, c, 3))
             return fl_fail(err, FL_ERR_INPUT, r->path, r->line,

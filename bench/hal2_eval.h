@@ -38,7 +38,8 @@ static void h2_push(h2_set *s, size_t *cap, const double *xy, size_t n)
 {
     if (n > 1 && xy[0] == xy[2 * (n - 1)] && xy[1] == xy[2 * (n - 1) + 1]) n--;
     if (n < 4) return;
-    if (s->count == *cap) s->rings = realloc(s->rings, (*cap = *cap ? 2 * *cap : 256) * sizeof *s->rings);
+    if (s->count == *cap)
+        s->rings = realloc(s->rings, (*cap = *cap ? 2 * *cap : 256) * sizeof *s->rings);
     h2_ring *r = &s->rings[s->count++];
     r->n = n;
     r->xy = malloc(2 * n * sizeof(double));
@@ -82,7 +83,8 @@ static int h2_load(const char *path, size_t count, h2_set *s)
     fclose(f);
     qsort(s->rings, s->count, sizeof *s->rings, h2_by_size);
     if (count && count < s->count) {
-        for (size_t i = count; i < s->count; i++) free(s->rings[i].xy);
+        for (size_t i = count; i < s->count; i++)
+            free(s->rings[i].xy);
         s->count = count;
     }
     return 0;
@@ -90,7 +92,8 @@ static int h2_load(const char *path, size_t count, h2_set *s)
 
 static void h2_free(h2_set *s)
 {
-    for (size_t i = 0; i < s->count; i++) free(s->rings[i].xy);
+    for (size_t i = 0; i < s->count; i++)
+        free(s->rings[i].xy);
     free(s->rings);
 }
 
@@ -123,15 +126,23 @@ static double h2_point_segment(const double *p, const double *a, const double *b
     return hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
 }
 
-/* Largest distance from a vertex of r to the closed ring approx (m vertices). */
+/* Largest distance from a vertex of r to the closed ring approx (m vertices). Brute force over
+ * the edges, but each vertex starts at the edge nearest to the previous vertex: consecutive
+ * vertices usually share it, so the scan stops at once when the vertex cannot raise the maximum
+ * (the result is the same in any order). */
 static double h2_error(const h2_ring *r, const double *approx, size_t m)
 {
     double worst = 0;
+    size_t start = 0;
     for (size_t i = 0; i < r->n; i++) {
         double best = INFINITY;
-        for (size_t j = 0; j < m && best > worst; j++)
-            best = fmin(best, h2_point_segment(r->xy + 2 * i, approx + 2 * j,
-                                               approx + 2 * ((j + 1) % m)));
+        for (size_t t = 0, j = start; t < m && best > worst; t++, j = j + 1 == m ? 0 : j + 1) {
+            double d = h2_point_segment(r->xy + 2 * i, approx + 2 * j, approx + 2 * ((j + 1) % m));
+            if (d < best) {
+                best = d;
+                start = j;
+            }
+        }
         if (best > worst && best < INFINITY) worst = best;
     }
     return worst;
@@ -157,8 +168,11 @@ static size_t h2_pairs(const h2_set *s, size_t k, uint32_t **out)
     return n;
 }
 
-/* The tolerances of the approximation curve, as fractions of each ring's bbox diagonal. */
-static const double h2_fractions[] = {0.1, 0.03, 0.01, 0.003, 0.001, 0.0003};
+/* The tolerances of the approximation curve, as fractions of each ring's bbox diagonal: the
+ * table of docs/hal.md uses 0.1, 0.03, ..., 0.0003; the others fill in the plot
+ * (bench/tools/plot_hal2_approx.py). */
+static const double h2_fractions[] = {0.3,   0.2,   0.1,   0.05,   0.03,   0.02,   0.01,  0.005,
+                                      0.003, 0.002, 0.001, 0.0005, 0.0003, 0.0002, 0.0001};
 #define H2_FRACTIONS (sizeof h2_fractions / sizeof h2_fractions[0])
 
 #endif

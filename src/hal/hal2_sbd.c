@@ -72,21 +72,27 @@ static int circle_on(const circle *c, const double *p)
     return fl_incircle(c->s[0], c->s[1], c->s[2], p) == 0;
 }
 
-static double dist2(const double *a, const double *b)
+/* Floating distance; hypot, not the squared distance, which underflows to 0 for coordinates
+ * near 1e-300 and made every vertex tie with `from` itself (the root pair was one vertex
+ * twice, so one edge was covered twice and reported twice by fl_hal2_intersect). */
+static double dist(const double *a, const double *b)
 {
-    double dx = a[0] - b[0], dy = a[1] - b[1];
-    return dx * dx + dy * dy;
+    return hypot(a[0] - b[0], a[1] - b[1]);
 }
 
-/* Of the vertices on the circle, the one farthest from `from` (floating distances). */
+/* Of the vertices on the circle, the one farthest from `from` (floating distances), never one
+ * at the same point as `from`: a circle through three points exactly (c->n == 3) holds at least
+ * two distinct points, so the root pair always spans a chord. */
 static uint32_t farthest_on_circle(const double *xy, const uint32_t *idx, size_t n, const circle *c,
                                    uint32_t from)
 {
+    const double *f = xy + 2 * (size_t)from;
     uint32_t best = from;
     double bd = -1;
     for (size_t k = 0; k < n; k++) {
         const double *p = xy + 2 * (size_t)idx[k];
-        double d = dist2(p, xy + 2 * (size_t)from);
+        if (p[0] == f[0] && p[1] == f[1]) continue;
+        double d = dist(p, f);
         if (d > bd && circle_on(c, p)) bd = d, best = idx[k];
     }
     return best;

@@ -1775,6 +1775,48 @@ void fl_skin_approx_free(fl_skin_approx *approx);
 /* end of skin */
 
 
+/* ==== sweep_dynamic ======================================================================= */
+/* (section owned by src/sweep/rigid.c and src/sweep/deform.c; docs/sweep.md "Moving shapes")
+ *
+ * Meshsweeper queries against a shape that moves (Guéziec §5.2, §5.3). A rigid motion does not
+ * touch the hierarchy: the query is carried into the shape's frame. A deforming mesh keeps its
+ * hierarchy too: fl_sweep_update_vertices moves the leaves and updates every bounding volume
+ * bottom-up (translate, then bound the sphere radius from the children), so answers stay exact
+ * with no rebuild; cursors keep their queues across updates and widen them by the largest
+ * vertex displacement (§5.2). An update must not run while the hierarchy is being queried. */
+
+/* A rigid motion x -> R x + t of a shape; r is row-major (r[3*i + j] = R_ij) and must be
+ * orthonormal to 1e-12 (a rotation, or a reflection). For a 2D polyline hierarchy the motion
+ * must keep the plane z = 0: r[2] = r[5] = r[6] = r[7] = t[2] = 0. */
+typedef struct fl_sweep_pose {
+    double r[9];
+    double t[3];
+} fl_sweep_pose;
+
+/* As fl_sweep_closest, for the shape moved by `pose`: q holds nq*dim points in the world frame;
+ * distance, element, bary, lower/upper are those of the moved shape and `point` is in the
+ * world frame. FL_ERR_INPUT for a bad pose, otherwise as fl_sweep_closest. */
+fl_status fl_sweep_closest_posed(const fl_sweep *sweep, const fl_sweep_pose *pose, const double *q,
+                                 size_t nq, double tolerance, fl_closest *results, fl_error *err);
+
+/* One query through a cursor for the shape moved by `pose` (which may change from call to
+ * call): a shape moving a little at a time is a query moving a little at a time in the shape's
+ * frame, and the cursor's kept queue (§5.1) pays off the same way. */
+fl_status fl_sweep_cursor_closest_posed(fl_sweep_cursor *cursor, const fl_sweep_pose *pose,
+                                        const double *q, double tolerance, fl_closest *result,
+                                        fl_error *err);
+
+/* Moves the vertices of a mesh hierarchy (from fl_sweep_build) to xyz (3 * vertex_count
+ * doubles, same count and triangles as the built mesh, finite with |x| <= 1e150) and updates
+ * its bounding volumes bottom-up in O(T): the answers afterwards are exact for the new mesh.
+ * The volumes only stay tight while the motion is locally close to rigid; after a large
+ * deformation a rebuild makes queries faster again (never more correct). Cursors on the
+ * hierarchy stay valid. FL_ERR_USAGE for NULL or a polyline hierarchy, FL_ERR_INPUT for a bad
+ * coordinate (the hierarchy is then unchanged), FL_ERR_NOMEM (unchanged too). */
+fl_status fl_sweep_update_vertices(fl_sweep *sweep, const double *xyz, fl_error *err);
+
+/* end of sweep_dynamic */
+
 #ifdef __cplusplus
 }
 #endif

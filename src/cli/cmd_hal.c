@@ -190,7 +190,13 @@ int cmd_hal(int argc, char **argv)
     fl_status st =
         level_s ? fl_hal2_approximate_level(&hal, (uint32_t)level, &approx, &error, &err)
                 : fl_hal2_approximate_error(&hal, max_error, &approx, &error, &used_level, &err);
-    if (st == FL_OK && c.output) st = fl_write_polygon(c.output, &approx, &err);
+    char ext[16];
+    fl_path_extension(c.output ? c.output : "", ext, sizeof ext);
+    if (st == FL_OK && c.output && !strcmp(ext, "svg")) /* with the flintstones */
+        st = cli_write_hal2_svg(c.output, &hal, &approx, level_s != NULL, (uint32_t)level,
+                                max_error, &err);
+    else if (st == FL_OK && c.output)
+        st = fl_write_polygon(c.output, &approx, &err);
     if (st == FL_OK && c.json) {
         cli_json j;
         cli_json_begin(&j, stdout);

@@ -24,4 +24,10 @@ int cmd_skin(int argc, char **argv);
  * format as a flat mesh (z = 0). Shared by `delaunay -o` and the demo. */
 fl_status cli_write_dt2(const char *path, const fl_points *p, const fl_dt2 *dt, fl_error *err);
 
+/* The picture of a flintstone approximation: the polygon, the approximation and the
+ * flintstones of the polylines it cuts off (by level, or adaptively by max_error as in
+ * fl_hal2_approximate_error). Shared by `hal -o .svg` and the demo. */
+fl_status cli_write_hal2_svg(const char *path, const fl_hal2 *hal, const fl_polygon *approx,
+                             int by_level, uint32_t level, double max_error, fl_error *err);
+
 #endif

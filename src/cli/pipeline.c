@@ -2,6 +2,8 @@
  * summary.json under a snake_case key and to report.html with its unit and meaning. */
 #include "cli/pipeline.h"
 
+#include "cli/png_write.h"
+
 #include <stdio.h>
 #include <string.h>
 
@@ -82,4 +84,26 @@ void pl_text(pipeline *pl, const char *key, const char *name, const char *v, con
 {
     cli_json_string(pl->json, key, v);
     cli_page_text(pl->page, name, v, meaning);
+}
+
+fl_render *pl_scene(void)
+{
+    fl_render_options o = {0};
+    o.width = 800;
+    o.height = 600;
+    o.azimuth = 30;
+    o.elevation = 25;
+    o.supersample = 2;
+    fl_render *r = NULL;
+    fl_error err;
+    return fl_render_new(&o, &r, &err) == FL_OK ? r : NULL;
+}
+
+fl_status pl_scene_write(const pipeline *pl, fl_render *scene, const char *file, fl_error *err)
+{
+    char path[1024];
+    pl_path(pl, path, sizeof path, file);
+    fl_status st = cli_render_png(scene, path, NULL, err);
+    fl_render_free(scene);
+    return st;
 }

@@ -40,6 +40,11 @@ void pl_count(pipeline *pl, const char *key, const char *name, unsigned long lon
 void pl_bool(pipeline *pl, const char *key, const char *name, int v, const char *meaning);
 void pl_text(pipeline *pl, const char *key, const char *name, const char *v, const char *meaning);
 
+/* Pictures: a scene with the report's size and view (800 x 600, from azimuth 30, elevation
+ * 25, 2x2 supersampled), NULL when out of memory; written to out_dir/file as PNG (and freed). */
+fl_render *pl_scene(void);
+fl_status pl_scene_write(const pipeline *pl, fl_render *scene, const char *file, fl_error *err);
+
 /* Groups the steps of one input under a JSON object `key` and a report heading. */
 void pl_group_begin(pipeline *pl, const char *key, const char *title, const char *text);
 void pl_group_end(pipeline *pl);

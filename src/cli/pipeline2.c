@@ -118,7 +118,7 @@ static void step_reconstruct(pipeline *pl, state2 *s)
 /* Three approximation levels spread over the tree's depth: coarse, middle, fine. */
 static void step_hal(pipeline *pl, state2 *s)
 {
-    char out[1024], file[256], cmd[2300], poly_path[1024], poly_file[256];
+    char file[256], cmd[2300], poly_path[1024], poly_file[256];
     snprintf(poly_file, sizeof poly_file, "%s-boundary.xy", s->name);
     pl_path(pl, poly_path, sizeof poly_path, poly_file);
     fl_error err;
@@ -126,18 +126,20 @@ static void step_hal(pipeline *pl, state2 *s)
     fl_status st = fl_hal2_build(&s->boundary, NULL, &hal, &err);
     uint32_t levels[3] = {2, 4, 6};
     if (st == FL_OK) {
-        uint32_t d = hal.depth < 3 ? 3 : hal.depth;
-        levels[0] = (d + 3) / 4;
-        levels[1] = (d + 1) / 2;
-        levels[2] = (3 * d + 2) / 4;
+        uint32_t d = hal.depth < 8 ? 8 : hal.depth;
+        levels[0] = d / 8;
+        levels[1] = d / 4;
+        levels[2] = d / 2;
     }
     snprintf(file, sizeof file, "%s-hal-%u.svg", s->name, levels[1]);
-    pl_path(pl, out, sizeof out, file);
-    snprintf(cmd, sizeof cmd, "flintstone hal %s --level %u -o %s", poly_path, levels[1], out);
+    snprintf(cmd, sizeof cmd, "flintstone hal %s --level %u -o %s/%s-hal-%u.xy", poly_path,
+             levels[1], pl->out_dir, s->name, levels[1]);
     pl_step(pl, "hal_2d", "Flintstones: hierarchical approximation", file,
             "The HAL tree (thesis §7.2): each polyline between two vertices is bounded by a "
             "flintstone of two discs; refining a level splits it at its extreme vertex. Each "
-            "level is an approximating polygon with a certified distance bound.",
+            "level is an approximating polygon with a certified distance bound. Picture: the "
+            "middle level (blue) over the polygon (grey) and the flintstones (orange) that "
+            "bound what it cuts off.",
             cmd);
     if (st) {
         pl_step_failed(pl, "flintstone tree", &err);
@@ -151,9 +153,13 @@ static void step_hal(pipeline *pl, state2 *s)
         double error = 0;
         st = fl_hal2_approximate_level(&hal, levels[k], &approx, &error, &err);
         char lf[256], lp[1024];
-        snprintf(lf, sizeof lf, "%s-hal-%u.svg", s->name, levels[k]);
+        snprintf(lf, sizeof lf, "%s-hal-%u.xy", s->name, levels[k]);
         pl_path(pl, lp, sizeof lp, lf);
         if (st == FL_OK) st = fl_write_polygon(lp, &approx, &err);
+        char pic[1024];
+        pl_path(pl, pic, sizeof pic, file);
+        if (st == FL_OK && k == 1)
+            st = cli_write_hal2_svg(pic, &hal, &approx, 1, levels[k], 0, &err);
         if (st == FL_OK) {
             cli_json_open_object(pl->json, NULL);
             cli_json_uint(pl->json, "level", levels[k]);
@@ -178,17 +184,48 @@ static void step_hal(pipeline *pl, state2 *s)
     pl_step_end(pl, "flintstones: three approximation levels");
 }
 
+/* The polygon and a thinned grid of the classified queries. */
+static fl_status inside_picture(const pipeline *pl, const fl_polygon *b, const double *q,
+                                const uint8_t *where, int side, const char *file, fl_error *err)
+{
+    fl_svg *svg;
+    fl_status st = fl_svg_new(900, &svg, err);
+    if (st) return st;
+    fl_vec pts[3];
+    for (int k = 0; k < 3; k++) fl_vec_init(&pts[k], 2 * sizeof(double));
+    for (int i = 2; i < side; i += 5)
+        for (int j = 2; j < side; j += 5) {
+            size_t at = (size_t)i * side + j;
+            if (fl_vec_push(&pts[where[at] % 3], q + 2 * at, 1))
+                st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+        }
+    fl_svg_style poly = {"#1f4e79", "#eef3f8", 2, 0, 0};
+    fl_svg_style style[3] = {{"#9e9e9e", "#9e9e9e", 0, 0, 2},
+                             {"#1a9850", "#1a9850", 0, 0, 2.5},
+                             {"#d73027", "#d73027", 0, 0, 3}};
+    if (st == FL_OK) st = fl_svg_add_polygon(svg, b, &poly, err);
+    for (int k = 0; k < 3 && st == FL_OK; k++)
+        if (pts[k].count) st = fl_svg_add_points(svg, pts[k].data, pts[k].count, &style[k], err);
+    char path[1024];
+    pl_path(pl, path, sizeof path, file);
+    if (st == FL_OK) st = fl_svg_write(svg, path, err);
+    for (int k = 0; k < 3; k++) fl_vec_free(&pts[k]);
+    fl_svg_free(svg);
+    return st;
+}
+
 /* A grid of queries over the polygon's bounding box, answered through the tree. */
 static void step_inside(pipeline *pl, state2 *s)
 {
     enum { side = 200 };
-    char cmd[2300], poly_file[256];
+    char cmd[2300], poly_file[256], file[256];
     snprintf(poly_file, sizeof poly_file, "%s/%s-boundary.xy", pl->out_dir, s->name);
+    snprintf(file, sizeof file, "%s-inside.svg", s->name);
     snprintf(cmd, sizeof cmd, "flintstone inside %s QUERIES.xy --json", poly_file);
-    pl_step(pl, "inside_2d", "Point inclusion", NULL,
+    pl_step(pl, "inside_2d", "Point inclusion", file,
             "A 200 × 200 grid over the polygon's bounding box, each point classified inside, "
             "outside or on the boundary by the flintstone tree (exact orientation tests; HAL "
-            "paper §5.1).",
+            "paper §5.1). Picture: every 25th query, green inside, grey outside.",
             cmd);
     const fl_polygon *b = &s->boundary;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
@@ -219,6 +256,7 @@ static void step_inside(pipeline *pl, state2 *s)
     double t = cli_now() - t0;
     size_t count[3] = {0, 0, 0};
     for (size_t i = 0; st == FL_OK && i < side * side; i++) count[where[i] % 3]++;
+    if (st == FL_OK) st = inside_picture(pl, b, q, where, side, file, &err);
     fl_hal2_free(&hal);
     free(q);
     free(where);
@@ -240,65 +278,112 @@ static void step_inside(pipeline *pl, state2 *s)
     pl_step_end(pl, line);
 }
 
-/* Largest distance from samples of one curve to the other polyline: a lower bound on the
- * directed Hausdorff distance, exact at the samples (Meshsweeper queries). */
-static fl_status max_distance(const double *to, size_t nto, const double *from, size_t nfrom,
-                              double *out, size_t *at, fl_error *err)
+/* Certified Hausdorff distance between two closed 2D polylines, recorded under `key`. */
+static void hausdorff_numbers(pipeline *pl, const fl_hausdorff_result *r, const char *a,
+                              const char *b)
 {
-    fl_sweep *sw;
-    fl_status st = fl_sweep_polyline_build(to, nto, 2, 1, NULL, &sw, err);
-    if (st) return st;
-    fl_closest *r = fl_alloc_array(nfrom, sizeof *r);
-    st = r ? fl_sweep_closest(sw, from, nfrom, 0, r, err)
-           : fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-    *out = 0;
-    *at = 0;
-    for (size_t i = 0; st == FL_OK && i < nfrom; i++)
-        if (r[i].distance > *out) {
-            *out = r[i].distance;
-            *at = i;
-        }
-    free(r);
-    fl_sweep_free(sw);
-    return st;
+    char name[128], meaning[256];
+    snprintf(name, sizeof name, "h(%s → %s)", a, b);
+    snprintf(meaning, sizeof meaning, "certified interval [%.6g, %.6g]: every point of the %s "
+             "is within the upper bound of the %s", r->h_ab[0], r->h_ab[1], a, b);
+    cli_page_number(pl->page, name, r->h_ab[1], "units", meaning);
+    snprintf(name, sizeof name, "h(%s → %s)", b, a);
+    snprintf(meaning, sizeof meaning, "certified interval [%.6g, %.6g]", r->h_ba[0],
+             r->h_ba[1]);
+    cli_page_number(pl->page, name, r->h_ba[1], "units", meaning);
+    cli_json_open_array(pl->json, "h_ab");
+    cli_json_double(pl->json, NULL, r->h_ab[0]);
+    cli_json_double(pl->json, NULL, r->h_ab[1]);
+    cli_json_close(pl->json);
+    cli_json_open_array(pl->json, "h_ba");
+    cli_json_double(pl->json, NULL, r->h_ba[0]);
+    cli_json_double(pl->json, NULL, r->h_ba[1]);
+    cli_json_close(pl->json);
+    cli_json_open_array(pl->json, "hausdorff");
+    cli_json_double(pl->json, NULL, r->hausdorff[0]);
+    cli_json_double(pl->json, NULL, r->hausdorff[1]);
+    cli_json_close(pl->json);
+    pl_count(pl, "samples", "samples", r->samples, "points where distances were measured");
 }
 
-static void step_distance(pipeline *pl, state2 *s, const char *truth)
+static void step_distance(pipeline *pl, state2 *s, const fl_points *t, const char *truth)
 {
     char cmd[2300];
-    snprintf(cmd, sizeof cmd, "flintstone closest %s/%s-boundary.xy %s --json", pl->out_dir,
-             s->name, truth);
-    pl_step(pl, "distance_2d", "Distance to the original curve", NULL,
-            "How far the reconstructed polygon is from the curve the points were sampled on: "
-            "the largest distance from the curve's dense samples to the polygon and from the "
-            "polygon's vertices to the curve, by Meshsweeper closest-point queries.",
+    snprintf(cmd, sizeof cmd, "flintstone hausdorff %s %s/%s-boundary.xy --closed --relative 1e-4 "
+             "--json", truth, pl->out_dir, s->name);
+    pl_step(pl, "hausdorff_2d", "Hausdorff distance to the original curve", NULL,
+            "How far the reconstructed polygon is from the curve the points were sampled on, over "
+            "every point of both (not only the vertices): the certified Hausdorff distance "
+            "(Guéziec §6), refined until its interval is narrower than 1e-4 of the diagonal.",
             cmd);
     fl_error err;
-    fl_points t;
-    if (fl_read_points(truth, &t, &err)) {
-        pl_step_failed(pl, "reading the ground truth", &err);
-        return;
-    }
-    double d_tr = 0, d_rt = 0;
-    size_t at_tr = 0, at_rt = 0;
-    fl_status st = t.dim == 2 ? FL_OK
-                              : fl_fail(&err, FL_ERR_INPUT, truth, -1, "expected a 2D polyline");
+    fl_hausdorff_result r;
+    fl_hausdorff_options o = {0};
+    o.relative = 1e-4;
+    o.both_directions = 1;
     const fl_polygon *b = &s->boundary;
-    if (st == FL_OK)
-        st = max_distance(b->xy, b->vertex_count, t.coords, t.count, &d_tr, &at_tr, &err);
-    if (st == FL_OK)
-        st = max_distance(t.coords, t.count, b->xy, b->vertex_count, &d_rt, &at_rt, &err);
-    fl_points_free(&t);
-    if (st) {
-        pl_step_failed(pl, "distance", &err);
+    if (fl_hausdorff_polylines(t->coords, t->count, 1, b->xy, b->vertex_count, 1, 2, &o, &r,
+                               &err)) {
+        pl_step_failed(pl, "Hausdorff distance", &err);
         return;
     }
-    pl_num(pl, "truth_to_boundary", "curve → polygon", d_tr, "units",
-           "largest distance from a curve sample to the polygon");
-    pl_num(pl, "boundary_to_truth", "polygon → curve", d_rt, "units",
-           "largest distance from a polygon vertex to the curve (≈ 0: they were sampled on it)");
+    hausdorff_numbers(pl, &r, "curve", "polygon");
     char line[256];
-    snprintf(line, sizeof line, "distance to the true curve: %.4g", fmax(d_tr, d_rt));
+    snprintf(line, sizeof line, "Hausdorff distance to the true curve: [%.4g, %.4g]",
+             r.hausdorff[0], r.hausdorff[1]);
+    fl_hausdorff_result_free(&r);
+    pl_step_end(pl, line);
+}
+
+/* The polygon made tangent-continuous: closed cubic Bézier curves through its vertices (thesis
+ * §9.2), and how much closer that brings it to the true curve. */
+static void step_smooth(pipeline *pl, state2 *s, const fl_points *t)
+{
+    char file[256], path[1024], cmd[2300];
+    snprintf(file, sizeof file, "%s-smooth.svg", s->name);
+    pl_path(pl, path, sizeof path, file);
+    snprintf(cmd, sizeof cmd, "flintstone smooth %s/%s-boundary.xy -o %s --json", pl->out_dir,
+             s->name, path);
+    pl_step(pl, "smooth_2d", "G¹ curve through the polygon", file,
+            "Closed cubic Bézier curves through every vertex with tangents estimated by "
+            "length weighting (thesis §9.2); where the G¹ orientation condition fails the "
+            "tangent is repaired.",
+            cmd);
+    fl_error err;
+    fl_g1_curve c = {0};
+    fl_polygon sampled = {0};
+    fl_hausdorff_result r = {0};
+    fl_status st = fl_g1_curve_build(&s->boundary, NULL, &c, &err);
+    if (st == FL_OK) st = fl_g1_curve_write_svg(path, &c, &err);
+    if (st == FL_OK) st = fl_g1_curve_sample(&c, 16, &sampled, &err);
+    fl_hausdorff_options o = {0};
+    o.relative = 1e-4;
+    o.both_directions = 1;
+    if (st == FL_OK && t)
+        st = fl_hausdorff_polylines(t->coords, t->count, 1, sampled.xy, sampled.vertex_count, 1,
+                                    2, &o, &r, &err);
+    if (st) {
+        fl_g1_curve_free(&c);
+        fl_polygon_free(&sampled);
+        pl_step_failed(pl, "smooth curve", &err);
+        return;
+    }
+    pl_count(pl, "segments", "Bézier segments", c.vertex_count, "one a polygon edge");
+    pl_count(pl, "orientation_repairs", "orientation repairs", c.orientation_repairs,
+             "tangents replaced because the G¹ orientation condition failed");
+    if (t) {
+        char meaning[200];
+        snprintf(meaning, sizeof meaning, "certified Hausdorff distance between the smooth curve "
+                 "(16 samples a segment) and the true curve: [%.6g, %.6g]", r.hausdorff[0],
+                 r.hausdorff[1]);
+        pl_num(pl, "hausdorff_to_truth", "distance to the true curve", r.hausdorff[1], "units",
+               meaning);
+    }
+    char line[256];
+    snprintf(line, sizeof line, "smooth curve: %zu Bézier segments", c.vertex_count);
+    fl_hausdorff_result_free(&r);
+    fl_polygon_free(&sampled);
+    fl_g1_curve_free(&c);
     pl_step_end(pl, line);
 }
 
@@ -320,11 +405,27 @@ void pl_run_2d(pipeline *pl, const char *name, const char *path, const char *tru
     } else {
         step_delaunay(pl, &s);
         step_reconstruct(pl, &s);
+        fl_points t = {0};
+        int have_truth = 0;
+        if (s.boundary.vertex_count && truth) {
+            fl_status ts = fl_read_points(truth, &t, &err);
+            if (ts == FL_OK && t.dim != 2)
+                ts = fl_fail(&err, FL_ERR_INPUT, truth, -1, "expected a 2D polyline, got %dD",
+                             t.dim);
+            if (ts == FL_OK) {
+                have_truth = 1;
+            } else {
+                pl_step(pl, "truth", "Ground truth", NULL, "Reading the reference curve.", NULL);
+                pl_step_failed(pl, "reading the ground truth", &err);
+            }
+        }
         if (s.boundary.vertex_count) {
             step_hal(pl, &s);
             step_inside(pl, &s);
-            if (truth) step_distance(pl, &s, truth);
+            if (have_truth) step_distance(pl, &s, &t, truth);
+            step_smooth(pl, &s, have_truth ? &t : NULL);
         }
+        fl_points_free(&t);
     }
     pl_group_end(pl);
     fl_polygon_free(&s.boundary);

@@ -344,6 +344,11 @@ static uint8_t desired_sides(build *b, const live *x, const uint32_t *mv)
     for (int k = 0; k < 3; k++)
         if (mv[k] != FL_HAL3_NONE) ok |= (uint8_t)(1u << k);
     if (x->q == FL_HAL3_NONE) return ok;
+    /* A pillow (the partner across all three sides is one node, as the two roots): side splits
+     * would split both halves alike into flat double sheets whose edges carry four triangles;
+     * three-splits at their own interior vertices give a closed bipyramid instead. */
+    if (x->partner[0] >= 0 && x->partner[0] == x->partner[1] && x->partner[1] == x->partner[2])
+        return 0;
     int small[3], ns = 0;
     for (int k = 0; k < 3; k++) {
         small[k] =
@@ -653,7 +658,7 @@ fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3
     if (st == FL_OK && (!b.cur || !b.next || !b.count))
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hal3: out of memory");
     if (st == FL_OK) {
-        uint32_t r[3];
+        uint32_t r[3] = {0, 0, 0}; /* set by choose_root on success; zeroed for -O2 analysis */
         hal3_piece pa, pb;
         memset(&pa, 0, sizeof pa);
         memset(&pb, 0, sizeof pb);

@@ -8,6 +8,7 @@
  * priority process of §3.2 runs on it unchanged. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "core/core.h"
 #include "sweep/sweep_internal.h"
@@ -155,6 +156,17 @@ static void enclosing_triangle(const double *uv, size_t n, const double *lo, con
                 tri[c][ay] = flip[o] * (corner[c][1] + y0[o]);
             }
         }
+    if (best < INFINITY) return;
+    /* Every candidate overflowed or was NaN: a spread so thin in one direction that 2h/w is
+     * infinite or zero (found by fuzz_sweep: widths 1e-291 against 8, which left the triangle
+     * unset). The 45-degree triangle on the box encloses it with finite corners. */
+    double w = hi[0] - lo[0], h = hi[1] - lo[1];
+    tri[0][0] = lo[0] - h;
+    tri[0][1] = lo[1];
+    tri[1][0] = hi[0] + h;
+    tri[1][1] = lo[1];
+    tri[2][0] = lo[0] + w / 2;
+    tri[2][1] = lo[1] + h + w / 2;
 }
 
 /* Squared distance from p to the triangle v[0..8], with a fast path for the common case of a
@@ -401,6 +413,14 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
             }
         }
         st = split_ranges(s, mesh, perm, centroid, opt, err);
+    }
+    if (st == FL_OK) { /* the topology, for fl_sweep_update_vertices */
+        s->tri = fl_alloc_array(n, 3 * sizeof *s->tri);
+        s->vertex_count = mesh->vertex_count;
+        if (s->tri)
+            memcpy(s->tri, mesh->tri, 3 * n * sizeof *s->tri);
+        else
+            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
     }
     free(perm);
     free(centroid);

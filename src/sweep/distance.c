@@ -158,6 +158,7 @@ void fl_sweep_free(fl_sweep *sweep)
 {
     if (!sweep) return;
     free(sweep->nodes);
+    free(sweep->tri);
     free(sweep);
 }
 

@@ -34,6 +34,8 @@ struct fl_sweep_cursor {
     double center[3];
     double radius;
     uint32_t leaf; /* the node that is closest anywhere inside the ball */
+    double moved_seen;     /* s->moved and s->updates when the queue was last brought up */
+    uint64_t updates_seen; /* to date with the shape's motion (§5.2, §5.3) */
 };
 
 static void fill_leaf(const fl_sweep *s, uint32_t leaf, const double *q3, fl_closest *r)
@@ -129,6 +131,15 @@ static void approximate(const fl_sweep *s, const search *st, double lower, const
     r->exact = 0;
 }
 
+/* §5.2/§5.3: the shape moved by at most this much (its largest vertex displacement, summed
+ * over the updates since the queue was last brought up, widened for the rounding of the sums)
+ * since the kept intervals were computed; like a move of the query, it widens them all. */
+static double shape_motion(const fl_sweep_cursor *cur)
+{
+    if (cur->updates_seen == cur->s->updates) return 0;
+    return cur->s->moved - cur->moved_seen + 4 * DBL_EPSILON * cur->s->moved;
+}
+
 /* Starts over from the root ("the mesh is substituted with the base mesh", §4.2) when the
  * kept queue is unlikely to pay: the query jumped farther than the last distance (so most of
  * the queue would be dirty), the last query cost more than one from the root, or the queue
@@ -140,7 +151,9 @@ static void advance(fl_sweep_cursor *cur, const double *q3, search *st)
         d2 += (q3[c] - cur->q[c]) * (q3[c] - cur->q[c]);
     int reset = !cur->started || sqrt(d2) > cur->last_distance ||
                 cur->last_cost > cur->reset_cost || cur->h.n > 8 * cur->reset_cost + 64;
-    cur->travelled = reset ? 0 : cur->travelled + sqrt(d2) + st->slack;
+    cur->travelled = reset ? 0 : cur->travelled + sqrt(d2) + shape_motion(cur) + st->slack;
+    cur->moved_seen = cur->s->moved;
+    cur->updates_seen = cur->s->updates;
     for (int c = 0; c < 3; c++)
         cur->q[c] = q3[c];
     if (!reset) return;
@@ -206,6 +219,11 @@ fl_status fl_sweep_cursor_new(const fl_sweep *sweep, fl_sweep_cursor **out, fl_e
     return FL_OK;
 }
 
+const fl_sweep *fl_sweep_cursor_sweep(const fl_sweep_cursor *cursor)
+{
+    return cursor->s;
+}
+
 void fl_sweep_cursor_free(fl_sweep_cursor *cursor)
 {
     if (!cursor) return;
@@ -222,7 +240,7 @@ fl_status fl_sweep_cursor_closest(fl_sweep_cursor *cursor, const double *q, doub
     if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
     if (!fl_sweep_lift_query(cursor->s, q, q3))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
-    if (cursor->have_ball) {
+    if (cursor->have_ball && cursor->updates_seen == cursor->s->updates) {
         double d2 = 0;
         for (int c = 0; c < 3; c++)
             d2 += (q3[c] - cursor->center[c]) * (q3[c] - cursor->center[c]);

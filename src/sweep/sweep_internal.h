@@ -29,6 +29,13 @@ struct fl_sweep {
     size_t node_count;
     fl_sweep_node *nodes; /* nodes[0] is the root */
     double scale;         /* largest |coordinate| of the input, for rounding slack */
+    /* Meshes: the triangles' vertex indices, kept for fl_sweep_update_vertices (dynamic.c). */
+    uint32_t *tri;
+    size_t vertex_count;
+    /* §5.2/§5.3: every update adds its largest vertex displacement to `moved` and counts
+     * itself in `updates`; a cursor widens its kept intervals by the increase (query.c). */
+    double moved;
+    uint64_t updates;
 };
 
 /* Closest point on segment ab to p; *t in [0,1] is its parameter. Returns the squared
@@ -76,6 +83,9 @@ static inline double fl_sweep_query_slack(const fl_sweep *s, const double *q3)
 /* Lifts a query of dimension s->dim to 3D (z = 0 for 2D); 0 if a coordinate is not finite or
  * exceeds FL_SWEEP_MAX_COORD. */
 int fl_sweep_lift_query(const fl_sweep *s, const double *q, double *q3);
+
+/* The hierarchy a cursor searches (query.c). */
+const fl_sweep *fl_sweep_cursor_sweep(const fl_sweep_cursor *cursor);
 
 /* Allocates the sweep and its node array (2 * elements - 1 nodes). */
 fl_status fl_sweep_alloc(int dim, int triangles, size_t elements, fl_sweep **out, fl_error *err);

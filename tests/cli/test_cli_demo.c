@@ -21,10 +21,11 @@ static void test_demo_writes_summary_and_report_with_every_step_valid(void)
     static char summary[1 << 16];
     cli_read_file("demo_test_out/summary.json", summary, sizeof summary);
     CHECK(summary[0] == '{');
-    static const char *steps[] = {"\"leaf\":{",        "\"delaunay_2d\":{", "\"reconstruct_2d\":{",
-                                  "\"hal_2d\":{",      "\"inside_2d\":{",   "\"distance_2d\":{",
-                                  "\"peanut\":{",      "\"reconstruct_3d\":{", "\"check\":{",
-                                  "\"distance_3d\":{", "\"torus\":{"};
+    static const char *steps[] = {
+        "\"leaf\":{",         "\"delaunay_2d\":{", "\"reconstruct_2d\":{", "\"hal_2d\":{",
+        "\"inside_2d\":{",    "\"hausdorff_2d\":{", "\"smooth_2d\":{",     "\"peanut\":{",
+        "\"reconstruct_3d\":{", "\"check\":{",       "\"hal_3d\":{",        "\"hausdorff_3d\":{",
+        "\"smooth_3d\":{",    "\"skin\":{",         "\"torus\":{"};
     for (size_t i = 0; i < sizeof steps / sizeof steps[0]; i++)
         CHECK_MSG(strstr(summary, steps[i]) != NULL, "step %s missing", steps[i]);
     CHECK(strstr(summary, "\"error\":\"") == NULL); /* a failed step */
@@ -32,15 +33,25 @@ static void test_demo_writes_summary_and_report_with_every_step_valid(void)
     CHECK(strstr(summary, "\"closed\":false") == NULL);
     CHECK(strstr(summary, "\"valid\":false") == NULL);
     CHECK(strstr(summary, "\"self_intersections\":0") != NULL);
-    /* The torus keeps its handle; the peanut's reconstruction is a sphere. */
+    /* The torus keeps its handle (so the 3D flintstone tree, which needs genus 0, is skipped
+     * there with its reason); the peanut's reconstruction is a sphere. */
     CHECK_EQ_INT(number_after(summary, "\"torus\":{", "genus"), 1);
+    CHECK(strstr(strstr(summary, "\"torus\":{"), "\"hal_3d\":{\"skipped\"") != NULL);
     CHECK_EQ_INT(number_after(summary, "\"peanut\":{", "genus"), 0);
-    /* The leaf points lie on the true curve, 160 of them on a curve of length ~8: the polygon
-     * is within a few hundredths of it. The peanut: 1500 points on area ~13, spacing ~0.1. */
-    CHECK(number_after(summary, "\"distance_2d\":{", "truth_to_boundary") < 0.05);
-    CHECK(number_after(summary, "\"distance_2d\":{", "boundary_to_truth") < 1e-3);
-    CHECK(number_after(summary, "\"distance_3d\":{", "truth_to_mesh") < 0.3);
-    CHECK(number_after(summary, "\"distance_3d\":{", "mesh_to_truth") < 0.05);
+    /* Certified Hausdorff intervals: lower <= upper; the leaf polygon is within a few
+     * hundredths of the true curve (160 points on a curve of length ~8), and its G1 curve too. */
+    const char *h2 = strstr(summary, "\"hausdorff_2d\":{");
+    double l2 = NAN, u2 = NAN;
+    if (h2) sscanf(strstr(h2, "\"hausdorff\":[") + 13, "%lf,%lf", &l2, &u2);
+    CHECK_MSG(l2 <= u2 && u2 < 0.05, "curve <-> polygon [%g, %g]", l2, u2);
+    CHECK(number_after(summary, "\"smooth_2d\":{", "hausdorff_to_truth") < 0.05);
+    const char *h3 = strstr(summary, "\"hausdorff_3d\":{");
+    double l3 = NAN, u3 = NAN;
+    if (h3) sscanf(strstr(h3, "\"h_ab\":[") + 8, "%lf,%lf", &l3, &u3);
+    CHECK_MSG(l3 <= u3 && u3 < 0.3, "reference -> ours [%g, %g]", l3, u3);
+    /* G1: the torus's smooth surface interpolates its vertices and has no kinks. */
+    CHECK(number_after(summary, "\"torus\":{", "max_vertex_error") < 1e-12);
+    CHECK(number_after(summary, "\"torus\":{", "max_edge_normal_jump_deg") < 1e-6);
     /* The grid estimate of the leaf's area agrees with the polygon's exact area. */
     double area = number_after(summary, "\"reconstruct_2d\":{", "area");
     CHECK_NEAR(number_after(summary, "\"inside_2d\":{", "area_estimate"), area, 0.02 * area);
@@ -77,7 +88,7 @@ static void test_report_on_user_mesh_and_points_runs_the_steps_that_apply(void)
     CHECK(strstr(r.out, "\"ok\":true") != NULL);
     cli_read_file("rep_pts/summary.json", summary, sizeof summary);
     CHECK(strstr(summary, "\"leaf\":{") != NULL);
-    CHECK(strstr(summary, "\"distance_2d\":{") != NULL);
+    CHECK(strstr(summary, "\"hausdorff_2d\":{") != NULL);
     CHECK_EQ_INT(system("rm -rf rep_mesh rep_pts"), 0);
 }
 

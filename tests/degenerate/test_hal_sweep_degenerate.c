@@ -165,6 +165,22 @@ static void test_sweep_degenerate(void)
     uint32_t st_[] = {0, 1, 2, 0, 1, 3, 1, 4, 3};
     fl_mesh sm = {5, sv, 3, st_};
     expect_sweep("sliver", &sm, q, 4);
+    /* Regression (fuzz_sweep, then MemorySanitizer): vertices spread 16 units one way and
+     * 1e-291 the other; every candidate bounding triangle overflowed, the root's triangle
+     * was left uninitialized and a tolerance query returned lower 3e69 > upper 14.4. */
+    double tv[] = {-7.875, 0, 4, 0, -8, 7, -8, -8, 3.6075033944888133e-291,
+                   0, 4.9406564584124654e-324, -7.25, -8, 4, -8, -8, -7, -8};
+    uint32_t tt[] = {0, 0, 0, 0, 0, 3};
+    fl_mesh tm = {6, tv, 2, tt};
+    double q8[] = {-8, -8, -8, 0, 0, 0, 1e3, -1e3, 5};
+    expect_sweep("thin spread", &tm, q8, 3);
+    /* A sliver 1e-300 wide seen from 8 units away (fuzz_sweep: the oracle had called its
+     * projection inside; the distance is to an edge, 12.32). */
+    double fv[] = {2e-300, 2e-300, 2e-300, 2e-300, 9.8813129168249309e-324, 2e-300,
+                   2e-300, -1.375, -1.375};
+    uint32_t ft[] = {1, 2, 0};
+    fl_mesh fm = {3, fv, 1, ft};
+    expect_sweep("1e-300 sliver", &fm, q8, 3);
     /* A polyline of repeated points only. */
     double rep[] = {1, 2, 1, 2, 1, 2};
     CHECK_STATUS(fl_sweep_polyline_build(rep, 3, 2, 1, NULL, &s, &err), FL_OK, &err);

@@ -81,12 +81,6 @@ static void test_hal3_leaves_are_the_original_triangles_once(void)
     }
 }
 
-static int cmp_u64(const void *x, const void *y)
-{
-    uint64_t a = *(const uint64_t *)x, b = *(const uint64_t *)y;
-    return a < b ? -1 : a > b;
-}
-
 static void check_closed(const fl_mesh *ap, const char *what, const char *name, long level)
 {
     fl_mesh_report r;
@@ -100,38 +94,9 @@ static void check_closed(const fl_mesh *ap, const char *what, const char *name, 
     fl_mesh_report_free(&r);
 }
 
-/* Directed corner segments a->b not matched by a b->a of another triangle: the cracks. */
-static size_t crack_edges(const fl_mesh *ap)
-{
-    size_t n = 3 * ap->triangle_count, cracks = 0;
-    uint64_t *e = malloc((n + 1) * sizeof(uint64_t)), *r = malloc((n + 1) * sizeof(uint64_t));
-    for (size_t t = 0; t < ap->triangle_count; t++)
-        for (int k = 0; k < 3; k++) {
-            uint64_t a = ap->tri[3 * t + k], b = ap->tri[3 * t + (k + 1) % 3];
-            e[3 * t + k] = a << 32 | b;
-            r[3 * t + k] = b << 32 | a;
-        }
-    qsort(e, n, sizeof *e, cmp_u64);
-    qsort(r, n, sizeof *r, cmp_u64);
-    /* |multiset difference| / 2 = directed edges without a partner */
-    size_t i = 0, j = 0;
-    while (i < n || j < n) {
-        if (j == n || (i < n && e[i] < r[j]))
-            cracks++, i++;
-        else if (i == n || r[j] < e[i])
-            j++;
-        else
-            i++, j++;
-    }
-    free(e);
-    free(r);
-    return cracks;
-}
-
-/* Level 0 (the two triangles v_i v_j v_k) and the deepest level are closed oriented manifolds;
- * the levels between are crack-free except where shortest paths coalesce (a piece whose
- * corners merged; docs/hal.md "known limits"): fewer than 2% of their edges. */
-static void test_hal3_levels_are_closed_up_to_coalescing_paths(void)
+/* Every level is a closed, oriented manifold (thesis §7.3: the approximations are crack-free);
+ * level 0 is the two triangles v_i v_j v_k and the deepest level the input. */
+static void test_hal3_every_level_is_a_closed_manifold(void)
 {
     for (int i = 0; i < N_MESHES; i++) {
         fl_mesh m = test_mesh(i);
@@ -140,23 +105,17 @@ static void test_hal3_levels_are_closed_up_to_coalescing_paths(void)
             fl_mesh_free(&m);
             continue;
         }
-        uint32_t ends[2] = {0, hal.depth};
-        for (int e = 0; e < 2; e++) {
-            fl_mesh ap;
-            fl_error err;
-            CHECK_STATUS(fl_hal3_approximate_level(&hal, ends[e], &ap, NULL, &err), FL_OK, &err);
-            check_closed(&ap, "level", mesh_name[i], (long)ends[e]);
-            fl_mesh_free(&ap);
-        }
-        for (uint32_t l = 0; l <= hal.depth; l++) {
+        size_t last = 0;
+        for (uint32_t l = 0; l <= hal.depth + 1; l++) {
             fl_mesh ap;
             fl_error err;
             CHECK_STATUS(fl_hal3_approximate_level(&hal, l, &ap, NULL, &err), FL_OK, &err);
-            size_t c = crack_edges(&ap);
-            CHECK_MSG(c * 50 <= 3 * ap.triangle_count, "%s level %u: %zu crack edges of %zu",
-                      mesh_name[i], l, c, 3 * ap.triangle_count);
+            check_closed(&ap, "level", mesh_name[i], (long)l);
+            if (l == 0) CHECK_EQ_INT(ap.triangle_count, 2);
+            last = ap.triangle_count;
             fl_mesh_free(&ap);
         }
+        CHECK_EQ_INT(last, m.triangle_count);
         fl_hal3_free(&hal);
         fl_mesh_free(&m);
     }
@@ -276,10 +235,7 @@ static void test_hal3_adaptive_approximation_is_within_its_certified_error(void)
             fl_error err;
             CHECK_STATUS(fl_hal3_approximate_error(&hal, bound, &ap, &e, &lv, &err), FL_OK, &err);
             CHECK_MSG(e <= bound, "%s: error %g above bound %g", mesh_name[i], e, bound);
-            if (bound == 0) check_closed(&ap, "bound", mesh_name[i], s);
-            size_t cracks = crack_edges(&ap);
-            CHECK_MSG(cracks * 50 <= 3 * ap.triangle_count, "%s bound %g: %zu crack edges of %zu",
-                      mesh_name[i], bound, cracks, 3 * ap.triangle_count);
+            check_closed(&ap, "bound", mesh_name[i], s);
             if (bound == 0) CHECK_EQ_INT(ap.triangle_count, m.triangle_count);
             /* Every vertex and triangle centroid of the original is within e of the
              * approximation (grid distance overestimates by at most one grid step). */
@@ -343,7 +299,7 @@ int main(void)
 {
     static const fl_test_case cases[] = {
         FL_TEST_CASE(test_hal3_leaves_are_the_original_triangles_once),
-        FL_TEST_CASE(test_hal3_levels_are_closed_up_to_coalescing_paths),
+        FL_TEST_CASE(test_hal3_every_level_is_a_closed_manifold),
         FL_TEST_CASE(test_hal3_every_flintstone_contains_its_subtree_triangles),
         FL_TEST_CASE(test_hal3_adaptive_approximation_is_within_its_certified_error),
         FL_TEST_CASE(test_hal3_rejects_surfaces_that_are_not_sphere_like),

@@ -64,6 +64,14 @@ run_examples() {
     "$prefix/bin/flintstone" check "$tmp/$label.off" | grep -q "closed, manifold, oriented" ||
         fail "$label reconstruct_surface wrote a surface that is not closed"
     "$dir/delaunay_points" "$src/data/demo/leaf.xy" | grep -q triangles || fail "$label delaunay_points"
+    # a mesh against itself: the certified interval starts at 0 and is narrower than asked
+    out=$("$dir/hausdorff_meshes" "$src/data/demo/torus.off" "$src/data/demo/torus.off" 1e-4)
+    echo "$out" | awk '/^Hausdorff/ { gsub(/[\[\],]/, " "); if ($3 != 0 || $4 > 1e-3) exit 1; ok = 1 }
+        END { exit !ok }' || fail "$label hausdorff_meshes of a mesh against itself: $out"
+    "$dir/smooth_mesh" "$src/data/demo/torus.off" "$tmp/$label-smooth.off" 3 |
+        grep -q "normal jump" || fail "$label smooth_mesh"
+    "$prefix/bin/flintstone" check "$tmp/$label-smooth.off" | grep -q "closed, manifold, oriented" ||
+        fail "$label smooth_mesh wrote a surface that is not closed"
     if [ "$label" = pkg-config ] && command -v ldd >/dev/null; then
         ldd "$dir/closest_points" | grep -q "$libdir/libflintstone.so.$major" ||
             fail "closest_points does not load the installed libflintstone.so.$major"

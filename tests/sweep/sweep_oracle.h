@@ -56,20 +56,26 @@ static inline ld oracle_triangle(const double *p, const double *a, const double 
         h += n[k] * ((ld)p[k] - a[k]);
     }
     if (!(n2 > 0)) return best;
-    ld proj[3];
-    for (int k = 0; k < 3; k++)
-        proj[k] = (ld)p[k] - h * n[k] / n2;
+    /* p projects inside iff ((t - s) x (p - s)) . n > 0 for every edge st (p and its projection
+     * differ by a multiple of n, which leaves that sign unchanged). Only a clear inside counts:
+     * a sign within rounding of zero goes to the edges, which is exact when the projection is on
+     * an edge and off by at most the rounding when it is just inside. Found by fuzz_sweep: a
+     * sliver 1e-300 wide whose edge differences round to parallel gave sign 0 and the plane
+     * distance 8 instead of the edge distance 12.3. */
+    ld nn = sqrtl(n2);
     for (int i = 0; i < 3; i++) {
         const double *s = v[i], *t = v[(i + 1) % 3];
-        ld st[3], sp[3], w[3], sign = 0;
+        ld st[3], sp[3], w[3], sign = 0, lst = 0, lsp = 0;
         for (int k = 0; k < 3; k++) {
             st[k] = (ld)t[k] - s[k];
-            sp[k] = proj[k] - s[k];
+            sp[k] = (ld)p[k] - s[k];
+            lst += st[k] * st[k];
+            lsp += sp[k] * sp[k];
         }
         oracle_cross(st, sp, w);
         for (int k = 0; k < 3; k++)
             sign += w[k] * n[k];
-        if (sign < 0) return best;
+        if (!(sign > 1e-15L * sqrtl(lst) * sqrtl(lsp) * nn)) return best;
     }
     ld hp = fabsl(h) / sqrtl(n2);
     return hp < best ? hp : best;

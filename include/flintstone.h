@@ -1738,6 +1738,7 @@ typedef struct fl_skin_approx_options {
     double t;           /* shrink factor of the verified skin, in (0, 1); 0 means 0.5 */
     double cell;        /* mesher grid spacing; 0 means rho / 2 */
     int max_rounds;     /* constructions tried (rho = 0.8 eps, then x0.7 each); 0 means 3 */
+    size_t max_balls;   /* refuse more protecting balls than this (FL_ERR_INPUT); 0 means 1e6 */
     double budget_seconds; /* Hausdorff budget per round (still certified); 0 means 60 */
     fl_progress_fn progress; /* may be NULL; stages "skin balls", "skin", "hausdorff" */
     void *progress_user;
@@ -1745,7 +1746,8 @@ typedef struct fl_skin_approx_options {
 
 /* The result of fl_skin_approx. Free with fl_skin_approx_free. */
 typedef struct fl_skin_approx {
-    fl_balls surface;      /* B: the balls centred on the surface, all of radius rho */
+    fl_balls surface;      /* B: the protecting balls centred on the surface, radii <= rho */
+    size_t boundary_balls; /* the first boundary_balls of B are centred on vertices and edges */
     fl_balls perp;         /* B_perp: the union of these approximates the object (§5) */
     fl_balls star;         /* B*: B_perp and the negative-weight orthogonal balls (§6.2) */
     fl_mesh skin;          /* triangulation of skin^t(B*) (fl_skin_mesh) */
@@ -1755,7 +1757,9 @@ typedef struct fl_skin_approx {
     long long euler;       /* Euler characteristic of the skin mesh */
     long long euler_input; /* Euler characteristic of the input */
     int rounds;            /* constructions done */
-    int verified;          /* 1 iff hausdorff[1] <= epsilon and euler == euler_input */
+    int closed_manifold;   /* the skin mesh is closed, 2-manifold and oriented */
+    int verified;          /* 1 iff hausdorff[1] <= epsilon, euler == euler_input and
+                              closed_manifold */
 } fl_skin_approx;
 
 /* Approximates the closed, oriented 2-manifold triangle mesh `mesh` (any genus; fl_mesh_check

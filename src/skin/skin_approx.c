@@ -11,6 +11,9 @@
 #include "core/core.h"
 #include "skin/skin_eps.h"
 
+/* gamma of Algorithm 1 (§4.2): radii below gamma lgs, 0 < gamma < 1/2 */
+#define SKIN_GAMMA 0.45
+
 void fl_skin_approx_free(fl_skin_approx *a)
 {
     if (!a) return;
@@ -37,20 +40,31 @@ static fl_status check_input(const fl_mesh *mesh, long long *euler, fl_error *er
     return FL_OK;
 }
 
-/* One construction at ball radius rho: B, B_perp, B*, the skin mesh and both checks. */
-static fl_status round_once(const fl_mesh *mesh, double eps, double rho,
+/* One construction with protecting balls of radius <= rho: B, B_perp, B*, the skin mesh and the
+ * checks. */
+static fl_status round_once(const fl_mesh *mesh, skin_eps_grid *g, double eps, double rho,
                             const fl_skin_approx_options *o, fl_skin_approx *a, fl_error *err)
 {
-    fl_status st = skin_eps_surface_balls(mesh, rho, &a->surface, err);
-    if (st == FL_OK && fl_progress(o->progress, o->progress_user, "skin balls", 0.3))
-        st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
-    if (st == FL_OK) st = skin_eps_orthogonal_balls(mesh, &a->surface, &a->perp, &a->star, err);
+    skin_eps_sample smp;
+    fl_status st = skin_eps_surface_balls(mesh, rho, SKIN_GAMMA, o->max_balls, &smp, err);
     if (st != FL_OK) return st;
+    a->surface = smp.balls;
+    a->boundary_balls = smp.boundary_count;
+    free(smp.carrier);
+    free(smp.carrier_id);
+    if (fl_progress(o->progress, o->progress_user, "skin balls", 0.3))
+        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+    st = skin_eps_orthogonal_balls(g, &a->surface, &a->perp, &a->star, err);
+    if (st != FL_OK) return st;
+    if (a->perp.count == 0)
+        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
+                       "skin: no orthogonal ball lies inside the object (epsilon %g)", eps);
     a->rho = rho;
     fl_skin_options so = {0};
     so.t = a->t;
-    /* The skin lies in the shell ∪B of thickness 2 rho; its bumps have the size of the surface
-     * balls, so a cell of rho / 2 resolves them (measured: docs/skin.md). */
+    /* The skin lies in the shell between the surface and the inner boundary of the union of the
+     * protecting balls (Lemma 17), at most rho thick; cells of rho / 2 resolve it (measured,
+     * docs/skin.md) and the checks below catch a grid that did not. */
     so.cell = o->cell > 0 ? o->cell : 0.5 * rho;
     so.progress = o->progress;
     so.progress_user = o->progress_user;
@@ -64,6 +78,7 @@ static fl_status round_once(const fl_mesh *mesh, double eps, double rho,
     st = fl_mesh_check(&a->skin, &co, &rep, err);
     if (st != FL_OK) return st;
     a->euler = rep.euler;
+    a->closed_manifold = rep.closed && rep.manifold && rep.oriented;
     fl_mesh_report_free(&rep);
     fl_hausdorff_options ho = {0};
     ho.precision = eps / 20;
@@ -76,7 +91,7 @@ static fl_status round_once(const fl_mesh *mesh, double eps, double rho,
     a->hausdorff[0] = hr.hausdorff[0];
     a->hausdorff[1] = hr.hausdorff[1];
     fl_hausdorff_result_free(&hr);
-    a->verified = a->hausdorff[1] <= eps && a->euler == a->euler_input;
+    a->verified = a->hausdorff[1] <= eps && a->euler == a->euler_input && a->closed_manifold;
     return FL_OK;
 }
 
@@ -95,20 +110,25 @@ fl_status fl_skin_approx_build(const fl_mesh *mesh, double epsilon,
     if (!(epsilon > 0) || !isfinite(epsilon))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: epsilon must be finite and > 0");
     if (o.max_rounds == 0) o.max_rounds = 3;
+    if (o.max_balls == 0) o.max_balls = 1000000;
     long long euler_input = 0;
     fl_status st = check_input(mesh, &euler_input, err);
     if (st != FL_OK) return st;
-    /* Theorem 14: ∂∪B_perp ⊂ ∪B, so surface balls of radius rho < epsilon leave room for the
-     * mesher's chordal error; each failed round shrinks them. */
+    skin_eps_grid g;
+    st = skin_eps_grid_build(mesh, epsilon / SKIN_GAMMA, &g, err);
+    if (st != FL_OK) return st;
+    /* Theorem 14: ∂∪B_perp ⊂ ∪B, so protecting balls of radius rho < epsilon leave room for
+     * the mesher's chordal error; each failed round shrinks them. */
     double rho = 0.8 * epsilon;
     for (int r = 0; r < o.max_rounds; r++, rho *= 0.7) {
         fl_skin_approx_free(out);
         out->t = o.t;
         out->euler_input = euler_input;
         out->rounds = r + 1;
-        st = round_once(mesh, epsilon, rho, &o, out, err);
+        st = round_once(mesh, &g, epsilon, rho, &o, out, err);
         if (st != FL_OK || out->verified) break;
     }
+    skin_eps_grid_free(&g);
     if (st != FL_OK) fl_skin_approx_free(out);
     return st;
 }

@@ -132,7 +132,7 @@ static fl_status star_faces(const fl_balls *b, const fl_rt3 *rt, double tol, fl_
     return FL_OK;
 }
 
-fl_status skin_eps_orthogonal_balls(const fl_mesh *m, const fl_balls *b, fl_balls *perp,
+fl_status skin_eps_orthogonal_balls(skin_eps_grid *g, const fl_balls *b, fl_balls *perp,
                                     fl_balls *star, fl_error *err)
 {
     fl_rt3 rt = {0};
@@ -148,7 +148,7 @@ fl_status skin_eps_orthogonal_balls(const fl_mesh *m, const fl_balls *b, fl_ball
     for (size_t i = 0; i < rt.tet_count && st == FL_OK; i++) {
         const double *o = rt.ortho + 4 * i;
         if (!(o[3] > 0) || !isfinite(o[0] + o[1] + o[2] + o[3])) continue;
-        if (skin_eps_winding(m, o) > 0.5 && fl_vec_push(&vp, o, 1))
+        if (skin_eps_inside(g, o) && fl_vec_push(&vp, o, 1))
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory (B_perp)");
     }
     if (st == FL_OK && fl_vec_push(&vs, vp.data, vp.count))

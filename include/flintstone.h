@@ -1721,14 +1721,16 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
                        fl_skin_stats *stats, fl_error *err);
 
 /* ---- ε-approximation of a polyhedron by balls (Cheng & Tan §5, §6.2; docs/skin.md) ----
- * B: balls of one radius rho <= epsilon centred on a conforming sampling of the surface (every
- * triangle split into k^2 similar triangles whose circumradius is <= rho, so the balls cover
- * the surface). This replaces the paper's lgs-driven Algorithm 1 (§4.2) and does NOT check C1/C2;
- * instead the result is verified: the certified Hausdorff distance between the triangulated
- * skin^t(B*) and the input is <= epsilon and their Euler characteristics agree, else rho
- * shrinks and the construction is repeated.
+ * B: protecting balls centred on the mesh, each of radius min(0.45 lgs(centre), rho) with lgs
+ * the local gap size (§4) and rho = 0.8 epsilon, covering every vertex, edge and triangle, so
+ * conditions C1/C2 of Theorem 5 hold. They are placed by bisecting edges and 4-splitting
+ * triangles instead of at restricted Voronoi vertices (Algorithm 1); counts therefore differ
+ * from the paper's. The result is also verified: the certified Hausdorff distance between the
+ * triangulated skin^t(B*) and the input is <= epsilon, their Euler characteristics agree and
+ * the skin mesh is closed and manifold, else rho shrinks (x0.7) and the construction repeats.
  * B_perp (§5): orthogonal balls of the regular-triangulation tetrahedra of B whose orthocentre
- * lies inside the object (generalised winding number > 1/2) and whose weight is positive.
+ * lies inside the object (ray parity, winding number near degeneracies) and whose weight is
+ * positive.
  * B* (§6.2): B_perp plus the orthogonal balls (negative weight) of the vertices, edges and
  * triangles of the regular triangulation whose focus lies in their power face at negative
  * power (the alpha simplices of B with z_X^perp non-empty). */

@@ -7,7 +7,7 @@ PREFIX ?= /usr/local
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE ?= cmake
 
-.PHONY: all build demo test test-debug test-asan install api-docs deb-test fuzz fuzz-build valgrind clean
+.PHONY: all build demo test test-debug test-asan install api-docs deb-test fuzz fuzz-build msan valgrind clean
 
 all: build
 
@@ -51,6 +51,11 @@ fuzz-build:
 fuzz:
 	$(MAKE) -C fuzz run FUZZ_SECONDS=$(FUZZ_SECONDS)
 
+# MemorySanitizer: the library and every fuzz target built with clang -fsanitize=memory into
+# build-msan/, each replaying its committed corpus (fuzz/corpus/<target>) once.
+msan:
+	$(MAKE) -C fuzz msan
+
 # valgrind memcheck on a fast subset of the debug-build tests: zero errors and leaks required.
 valgrind:
 	$(CMAKE) -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug >/dev/null
@@ -58,4 +63,4 @@ valgrind:
 	scripts/valgrind.sh build-debug
 
 clean:
-	rm -rf build build-debug build-asan build-fuzz
+	rm -rf build build-debug build-asan build-fuzz build-msan

@@ -124,6 +124,57 @@ static inline int fz_coplanar3(const double *p, size_t n, size_t stride)
     return 1;
 }
 
+/* A small closed oriented genus-0 mesh decoded from the bytes: a tetrahedron, an octahedron, or
+ * an octahedron with some faces replaced by three triangles to an apex pushed outward (up to 14
+ * vertices, 24 triangles; xyz and tri must hold that much). Every vertex is scaled and moved by
+ * a decoded offset (fz_coord / 16: mostly small, sometimes NaN/Inf/huge, so folds, near-flat
+ * spots and bad coordinates all occur). With `mutate`, one byte may then flip a triangle or
+ * redirect a corner (open, misoriented or non-manifold input). The caller judges validity. */
+static inline void fz_closed_mesh(fz_in *in, int mutate, double *xyz, uint32_t *tri, size_t *nv,
+                                  size_t *nt)
+{
+    static const double scale[8] = {1, 1, 1, 1e-3, 1e3, 1e-100, 1e100, 0.125};
+    uint8_t shape = fz_byte(in), split = 0;
+    double s = scale[(shape >> 2) & 7];
+    if ((shape & 3) == 0) { /* tetrahedron */
+        static const double v[12] = {0, 0, 0, 4, 0, 0, 0, 4, 0, 0, 0, 4};
+        static const uint32_t t[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+        memcpy(xyz, v, sizeof v), memcpy(tri, t, sizeof t);
+        *nv = 4, *nt = 4;
+    } else { /* octahedron: vertices +x -x +y -y +z -z */
+        for (int i = 0; i < 18; i++) xyz[i] = 0;
+        for (int i = 0; i < 6; i++) xyz[3 * i + i / 2] = (i & 1) ? -4 : 4;
+        *nv = 6, *nt = 0;
+        split = (shape & 3) == 1 ? 0 : fz_byte(in);
+        for (uint32_t f = 0; f < 8; f++) {
+            uint32_t a = f & 1, b = 2 + ((f >> 1) & 1), c = 4 + ((f >> 2) & 1);
+            if ((a + b + c) & 1) { /* odd number of negative axes: swap to stay outward */
+                uint32_t x = b;
+                b = c, c = x;
+            }
+            if (!((split >> f) & 1)) {
+                tri[3 * *nt] = a, tri[3 * *nt + 1] = b, tri[3 * *nt + 2] = c, ++*nt;
+                continue;
+            }
+            uint32_t q = (uint32_t)(*nv)++;
+            for (int k = 0; k < 3; k++) /* apex at twice the face centroid */
+                xyz[3 * q + k] = 2.0 * (xyz[3 * a + k] + xyz[3 * b + k] + xyz[3 * c + k]) / 3.0;
+            uint32_t e[3][3] = {{a, b, q}, {b, c, q}, {c, a, q}};
+            for (int k = 0; k < 3; k++, ++*nt) memcpy(tri + 3 * *nt, e[k], sizeof e[k]);
+        }
+    }
+    for (size_t i = 0; i < 3 * *nv; i++) xyz[i] = s * (xyz[i] + fz_coord(in) / 16.0);
+    if (!mutate) return;
+    uint8_t m = fz_byte(in);
+    size_t t = (size_t)(m >> 2) % *nt;
+    if ((m & 3) == 1) { /* flip */
+        uint32_t x = tri[3 * t];
+        tri[3 * t] = tri[3 * t + 1], tri[3 * t + 1] = x;
+    } else if ((m & 3) == 2) { /* redirect a corner */
+        tri[3 * t + (m >> 6) % 3] = (uint32_t)(fz_byte(in) % *nv);
+    }
+}
+
 /* Exactly what libFuzzer calls; declared here to satisfy -Wmissing-prototypes. */
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

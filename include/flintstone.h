@@ -817,7 +817,8 @@ typedef struct fl_reconstruction3 {
                             c1' >= c0) of the triangles the unlocking flips added; NaN:
                             Delaunay sufficed or augmentation was not tried */
     char reason[256];    /* empty when all_on_boundary is 1, else why points remain inside */
-    size_t flip_count;   /* 2-3 flips made to unlock constriction (0 when not locked) */
+    size_t flip_count;   /* 2-3 flips made to unlock constriction (0 when never locked or
+                            stalled, see docs/reconstruct3d.md) */
     size_t keep_missing; /* distinct kept triangles that are not on the final boundary */
 } fl_reconstruction3;
 
@@ -1415,7 +1416,7 @@ typedef struct fl_g1_curve {
 } fl_g1_curve;
 
 /* Builds the G1 curve of every ring of `polygon` (each ring at least 3 vertices, finite
- * coordinates, no two consecutive vertices equal, no ring turning back on itself by 180
+ * coordinates with |x| <= 1e150, no two consecutive vertices equal, no ring turning back on itself by 180
  * degrees at a vertex). FL_ERR_INPUT otherwise, FL_ERR_USAGE for bad options, FL_ERR_NOMEM.
  * On failure *out is zeroed. Free with fl_g1_curve_free. */
 fl_status fl_g1_curve_build(const fl_polygon *polygon, const fl_g1_curve_options *opt,
@@ -1446,7 +1447,12 @@ typedef enum fl_g1_scheme {
     FL_G1_THREE_SPLIT = 0, /* §9.6: three cubic micro patches a triangle; G1 to rounding on
                             * smooth meshes, not on every coarse one: measure it with
                             * fl_g1_surface_measure (docs/smooth.md has the numbers) */
-    FL_G1_MACRO = 1        /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
+    FL_G1_MACRO = 1,       /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
+    FL_G1_SIX_SPLIT = 2    /* §9.8: six cubic micro patches a triangle (split at the edge
+                            * midpoints and the centre), C1 inside each macro triangle, G1
+                            * across macro edges by the least-displacement solve of step 5
+                            * where that system has a solution: not on some mirror-symmetric
+                            * edges (singular_edges; docs/smooth.md has where and why) */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */
@@ -1461,7 +1467,8 @@ typedef struct fl_g1_surface_options {
  * in the order b300 b210 b201 b120 b111 b102 b030 b021 b012 b003 (b_ijk weights corner 0 by
  * i, corner 1 by j, corner 2 by k); its corners are the nodes corner[3p..3p+2],
  * counter-clockwise seen from outside. Node n < vertex_count is mesh vertex n; node
- * vertex_count + t is the split point of macro triangle t. macro[p] is the mesh triangle the
+ * vertex_count + t is the split point (centre) of macro triangle t; with the six-split, node
+ * vertex_count + triangle_count + e is the midpoint of macro edge e. macro[p] is the mesh triangle the
  * patch belongs to. Patches sharing an edge share its two end nodes. */
 typedef struct fl_g1_surface {
     size_t patch_count;
@@ -1476,15 +1483,17 @@ typedef struct fl_g1_surface {
                                  * right signs; decided exactly by fl_orient3d) */
     size_t orientation_failures; /* vertices where no repair was found (the surface folds
                                   * there), e.g. 3 on CGAL's hand.off */
-    size_t singular_edges;      /* macro edges where eq. 9.4 was dependent and the minimal
-                                 * displacement solution was taken */
+    size_t singular_edges;      /* three-split: macro edges where eq. 9.4 was dependent and
+                                 * the minimal displacement solution was taken; six-split:
+                                 * macro edges whose step-5 system was singular (their G1
+                                 * conditions may not hold) */
     size_t quadratic_edges;     /* macro edges whose boundary curve was made a degree-raised
                                  * quadratic because eq. 9.4 was (nearly) dependent with the
                                  * thesis's cubic curve (docs/smooth.md) */
 } fl_g1_surface;
 
-/* Builds the surface over a closed, manifold, oriented mesh (fl_mesh_check; else FL_ERR_INPUT
- * naming what is wrong), interpolating its vertices and estimated normals. O(V + T log T).
+/* Builds the surface over a closed, manifold, oriented mesh with coordinates |x| <= 1e150
+ * (fl_mesh_check; else FL_ERR_INPUT naming what is wrong), interpolating its vertices and estimated normals. O(V + T log T).
  * FL_ERR_USAGE for bad options, FL_ERR_NOMEM. On failure *out is zeroed. */
 fl_status fl_g1_surface_build(const fl_mesh *mesh, const fl_g1_surface_options *opt,
                               fl_g1_surface *out, fl_error *err);
@@ -1599,8 +1608,8 @@ typedef struct fl_hal3_options {
 /* Builds the flintstone tree of a closed triangle mesh (Algorithm 7.2). `opt` may be NULL.
  * The mesh must be closed, manifold, oriented, connected, of genus 0, without degenerate
  * triangles; otherwise FL_ERR_INPUT names the problem (e.g. "genus 1: the HAL tree needs a
- * sphere-like surface"). Also FL_ERR_INPUT for NaN/Inf coordinates, FL_ERR_USAGE for NULL
- * arguments or a threshold outside [0, pi/3], FL_ERR_ALGORITHM when cancelled or when the
+ * sphere-like surface"). Also FL_ERR_INPUT for NaN/Inf coordinates or |x| > 1e150,
+ * FL_ERR_USAGE for NULL arguments or a threshold outside [0, pi/3], FL_ERR_ALGORITHM when cancelled or when the
  * refinement cannot proceed (the message says where), FL_ERR_NOMEM. On failure *out is zeroed.
  * Free with fl_hal3_free. */
 fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3 *out,
@@ -1633,10 +1642,12 @@ fl_status fl_hal3_approximate_error(const fl_hal3 *hal, double max_error, fl_mes
 enum { FL_HAL3_OUTSIDE = 0, FL_HAL3_INSIDE = 1, FL_HAL3_BOUNDARY = 2 };
 
 /* Point-in-polyhedron for the n points xyz[3k..3k+2]: FL_HAL3_BOUNDARY when the point lies on a
- * triangle (exactly), else the parity of the crossings of a ray in +x direction, symbolically
- * perturbed so that it misses every edge, decided with fl_orient2d/fl_orient3d. The flintstones
- * prune the triangles the ray cannot reach; the answers equal the brute-force test's. Errors:
- * FL_ERR_USAGE, FL_ERR_INPUT for a NaN/Inf query. */
+ * triangle (exactly), else the parity of the crossings of an axis-parallel ray (towards the
+ * nearest face of the bounding box), symbolically perturbed so that it misses every edge,
+ * decided with fl_orient2d/fl_orient3d. The tree's hierarchy, laid out once a call with exact
+ * (outward-rounded) coordinate bounds per node, prunes the triangles the ray cannot reach; the
+ * answers equal the brute-force test's. Errors: FL_ERR_USAGE, FL_ERR_NOMEM, FL_ERR_INPUT for a
+ * NaN/Inf query (the answers before it are written). */
 fl_status fl_hal3_contains(const fl_hal3 *hal, const double *xyz, size_t n, uint8_t *where,
                            fl_error *err);
 
@@ -1676,8 +1687,9 @@ typedef struct fl_skin_function fl_skin_function;
 /* Builds G for the n balls xyzw[4n] and shrink factor t in (0, 1). At least one ball needs a
  * positive weight. Up to 8 balls need no triangulation (every subset of at most 4 balls is a
  * candidate simplex); more need 4 centres not in a plane (the regular triangulation, fl_rt3).
- * FL_ERR_USAGE for NULL pointers or t outside (0, 1); FL_ERR_INPUT for NaN/Inf, no positive
- * weight, coplanar centres (n > 8); FL_ERR_NOMEM. Free with fl_skin_function_free. */
+ * FL_ERR_USAGE for NULL pointers or t outside (0, 1); FL_ERR_INPUT for NaN/Inf or a value
+ * beyond 1e100, no positive weight, coplanar centres (n > 8); FL_ERR_NOMEM. Free with
+ * fl_skin_function_free. */
 fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_function **out,
                                fl_error *err);
 
@@ -1715,8 +1727,8 @@ typedef struct fl_skin_stats {
  * oriented (outward, counter-clockwise) 2-manifold triangle mesh for every input; it has the
  * topology of the skin when the grid resolves its features (necks thinner than the cell can
  * be missed; docs/skin.md). stats may be NULL. Errors as fl_skin_function_new, plus
- * FL_ERR_INPUT when the grid would exceed max_cubes cubes or 2^20 cells along an axis,
- * FL_ERR_ALGORITHM "cancelled". On failure *out is zeroed. Free with fl_mesh_free. */
+ * FL_ERR_INPUT when the grid would exceed max_cubes cubes or 2^20 cells along an axis or its
+ * spacing is below 1e-12 of a coordinate, FL_ERR_ALGORITHM "cancelled". On failure *out is zeroed. Free with fl_mesh_free. */
 fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
                        fl_skin_stats *stats, fl_error *err);
 

@@ -12,7 +12,10 @@
 #   CGAL: its reconstruction time (best of 3, in-process; ours is one whole process, so the
 #         ratio favours CGAL slightly), the fraction of points its surface uses (points minus
 #         check's unreferenced vertices), closed / genus / self-intersections by the same check.
-# Not measured (yet): distance between the two surfaces.
+# Then one QUALITY line per surface with a known truth (the demo peanut of data/demo, and the
+# vertices of libcgal-demo's genus-0 meshes blobby, cow, bull with the mesh as truth): the
+# one-sided Hausdorff distance surface -> truth (`flintstone hausdorff`, upper bound) and the
+# area (`flintstone check`) of ours and of CGAL's, and the truth's area.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 cache=${BENCH_CACHE:-$root/bench/cache}
@@ -59,4 +62,29 @@ for rel in "${inputs[@]}"; do
     "$(jget self_intersections <<<"$co")" "$cs" "$(python3 -c "print($os/$cs)")" \
     "$((n - cu))/$n" "$(jget closed <<<"$cc")" "$(jget genus <<<"$cc")" \
     "$(jget self_intersections <<<"$cc")"
+done
+
+printf '%-12s %7s | %9s %9s | %9s %9s | %9s\n' input points ours_h ours_area cgal_h cgal_area \
+  truth_area
+grep -v '^#' "$root/data/demo/peanut.xyz" >"$out/peanut.xyz"
+quality=("$out/peanut.xyz:$root/data/demo/peanut-truth.off")
+for m in blobby cow bull; do
+  mesh=$cache/cgal/data/meshes/$m.off
+  [ -e "$mesh" ] || continue
+  awk 'NR == 1 { next } NR == 2 { n = $1; next } n > 0 && NF >= 3 { print $1, $2, $3; n-- }' \
+    "$mesh" >"$out/$m.vertices.xyz"
+  quality+=("$out/$m.vertices.xyz:$mesh")
+done
+for pair in "${quality[@]}"; do
+  pts=${pair%%:*}; truth=${pair#*:}
+  name=$(basename "$pts" .xyz)
+  "$fl" reconstruct "$pts" -o "$out/$name.q.ours.off" >/dev/null 2>&1 || true
+  "$peer" "$pts" "$out/$name.q.cgal.off" >/dev/null
+  hget() { "$fl" hausdorff "$1" "$truth" --json | python3 -c \
+    "import json,sys; print('%.4f' % json.load(sys.stdin)['h_ab'][1])"; }
+  aget() { "$fl" check "$1" --json | python3 -c \
+    "import json,sys; print('%.3f' % json.load(sys.stdin)['area'])"; }
+  printf 'QUALITY %-12s %7d | %9s %9s | %9s %9s | %9s\n' "$name" "$(wc -l <"$pts")" \
+    "$(hget "$out/$name.q.ours.off")" "$(aget "$out/$name.q.ours.off")" \
+    "$(hget "$out/$name.q.cgal.off")" "$(aget "$out/$name.q.cgal.off")" "$(aget "$truth")"
 done

@@ -11,7 +11,7 @@
 static const char *usage_text =
     "usage: flintstone smooth POLYGON [-o OUT.svg|.xy] [--tangents length|uniform|inverse]\n"
     "                         [--samples N] [--json] [--quiet]\n"
-    "       flintstone smooth MESH [--scheme three-split|pn|auto] [--tess N]\n"
+    "       flintstone smooth MESH [--scheme three-split|six-split|pn|auto] [--tess N]\n"
     "                         [--normals area|uniform|inverse] [--tension B] [--samples N]\n"
     "                         [-o OUT.off|.ply|.obj|.stl|.bez] [--json] [--quiet]\n"
     "\n"
@@ -20,8 +20,9 @@ static const char *usage_text =
     "Bézier paths, -o .xy the curve sampled N points a segment (--samples, default 16).\n"
     "MESH (.off .obj .ply .stl, closed, manifold, oriented): cubic Bézier triangles\n"
     "interpolating the vertices and estimated normals (§9.4). Schemes: three-split (§9.6,\n"
-    "G1; auto is the same), pn (the macro patches of steps 1-3 = PN triangles, only C0).\n"
-    "The six-split and two-split schemes of §9.7-9.8 are not implemented.\n"
+    "G1; auto is the same), six-split (§9.8, less oscillation, G1 on most meshes but not\n"
+    "on some symmetric ones: check max_edge_normal_jump_deg), pn (the macro patches of\n"
+    "steps 1-3 = PN triangles, only C0). The two-split of §9.7 is not implemented.\n"
     "\n"
     "  --tangents W   curve tangent weighting (default length, §9.2 method 1)\n"
     "  --normals W    surface normal weighting (default area, §9.4 method 1)\n"
@@ -66,9 +67,9 @@ static int parse_value(smooth_args *a, const char *o, const char *v)
                             strcmp(o, "--normals") ? "length" : "area");
         a->weighting_set = 1;
     } else if (!strcmp(o, "--scheme")) {
-        if (strcmp(v, "three-split") && strcmp(v, "auto") && strcmp(v, "pn"))
-            return cli_fail(1, "smooth: --scheme takes three-split, pn or auto (the six-split "
-                               "is not implemented)");
+        if (strcmp(v, "three-split") && strcmp(v, "six-split") && strcmp(v, "auto") &&
+            strcmp(v, "pn"))
+            return cli_fail(1, "smooth: --scheme takes three-split, six-split, pn or auto");
         a->scheme = v;
     } else if (!strcmp(o, "--tension")) {
         if (cli_parse_double(v, &a->tension) || !(a->tension > 0 && a->tension < 1))
@@ -206,6 +207,7 @@ static void print_surface(const cli_common *c, const fl_g1_surface *s, const fl_
         cli_json_uint(&j, "orientation_flips", m->orientation_flips);
         cli_json_double(&j, "max_deviation", m->max_deviation);
         cli_json_uint(&j, "quadratic_edges", s->quadratic_edges);
+        cli_json_uint(&j, "singular_edges", s->singular_edges);
         cli_json_double(&j, "seconds", seconds);
         cli_json_end(&j);
     } else if (!c->quiet) {
@@ -227,8 +229,11 @@ static int run_surface(const cli_common *c, const smooth_args *a)
     fl_g1_metrics metrics;
     fl_status st = fl_read_mesh(a->input, &m, &err);
     if (st) return cli_report(&err);
-    fl_g1_surface_options o = {.scheme = a->scheme && !strcmp(a->scheme, "pn") ? FL_G1_MACRO
-                                                                               : FL_G1_THREE_SPLIT,
+    /* auto = three-split: the six-split is not G1 on every mesh (docs/smooth.md) */
+    int scheme = FL_G1_THREE_SPLIT;
+    if (a->scheme && !strcmp(a->scheme, "pn")) scheme = FL_G1_MACRO;
+    if (a->scheme && !strcmp(a->scheme, "six-split")) scheme = FL_G1_SIX_SPLIT;
+    fl_g1_surface_options o = {.scheme = scheme,
                                .weighting = a->weighting,
                                .tension = a->tension};
     st = fl_g1_surface_build(&m, &o, &s, &err);

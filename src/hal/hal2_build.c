@@ -89,6 +89,7 @@ static void make_fallback(const ring_ctx *r, uint32_t p, uint32_t s, fl_hal2_nod
     uint32_t q = p + 1;
     for (uint32_t k = p + 1; k < s; k++) {
         double d = segment_distance(a, b, vtx(r, k));
+        if (isnan(d)) d = INFINITY; /* overflowed coordinates: no finite bound */
         if (d > worst) worst = d, q = k;
     }
     nd->kind = FL_HAL2_DISC;
@@ -153,7 +154,12 @@ static void make_flintstone(const ring_ctx *r, uint32_t p, uint32_t s, fl_hal2_n
     double cl[2], cr[2];
     double wl = ql != UINT32_MAX ? disc_width(a, b, vtx(r, ql), cl) : -1;
     double wr = qr != UINT32_MAX ? disc_width(a, b, vtx(r, qr), cr) : -1;
-    int left_first = wl >= wr; /* split at the disc of larger signed radius (Alg. 7.1) */
+    if (isnan(wl) || isnan(wr)) { /* overflow near DBL_MAX (fuzz_hal2): no usable disc */
+        make_fallback(r, p, s, nd);
+        return;
+    }
+    /* Split at the disc of larger signed radius (Alg. 7.1); a lone side is always taken. */
+    int left_first = both ? wl >= wr : ql != UINT32_MAX;
     nd->q = left_first ? ql : qr;
     nd->r = both ? (left_first ? qr : ql) : nd->q;
     nd->width[0] = left_first ? wl : wr;
@@ -187,6 +193,7 @@ static void grow(fl_hal2 *hal, fl_hal2_ring *rg, hal2_pending *stack, size_t top
         fl_hal2_node *nd = &hal->nodes[id];
         memset(nd, 0, sizeof *nd);
         make_flintstone(&r, w.p, w.s, nd);
+        if (nd->q <= w.p || nd->q >= w.s) make_fallback(&r, w.p, w.s, nd); /* keeps p < q < s */
         *w.slot = (int32_t)id;
         uint32_t q = nd->q;
         nd->p = gidx(&r, w.p);

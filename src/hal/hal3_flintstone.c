@@ -62,21 +62,32 @@ static void circumcentre(const double *p, const double *s, const double *t, cons
         c[k] = p[k] + (la * bxd[k] + lb * dxa[k] + ld * axb[k]) / den;
 }
 
-/* Distance from x to the closed triangle abc (Ericson, Real-Time Collision Detection §5.1.5). */
+/* Distance from x to the closed triangle abc (Ericson, Real-Time Collision Detection §5.1.5).
+ * The region tests multiply dot products, i.e. 4th powers of the coordinates: at 1e100 they
+ * overflowed (inf / inf = NaN), the distance came out NaN and fmax dropped it, so a node's
+ * certified error was 0 with a vertex 1.75e100 away (found by fuzz/fuzz_hal3.c). The tests run
+ * on the differences scaled by a power of two (exact, and the tests are scale invariant); the
+ * closest point is built from the unscaled ones. */
 static double point_triangle_distance(const double *x, const double *a, const double *b,
                                       const double *c)
 {
     double ab[3], ac[3], ap[3], bp[3], cp[3], r[3];
-    sub(b, a, ab), sub(c, a, ac), sub(x, a, ap);
-    double d1 = dot(ab, ap), d2 = dot(ac, ap);
+    sub(b, a, ab), sub(c, a, ac), sub(x, a, ap), sub(x, b, bp), sub(x, c, cp);
+    double mx = 0, f = 1, sab[3], sac[3], sap[3], sbp[3], scp[3];
+    for (int k = 0; k < 3; k++)
+        mx = fmax(mx, fmax(fmax(fabs(ab[k]), fabs(ac[k])),
+                           fmax(fabs(ap[k]), fmax(fabs(bp[k]), fabs(cp[k])))));
+    if (mx > 0 && isfinite(mx)) f = ldexp(1.0, -ilogb(mx));
+    for (int k = 0; k < 3; k++)
+        sab[k] = f * ab[k], sac[k] = f * ac[k], sap[k] = f * ap[k], sbp[k] = f * bp[k],
+        scp[k] = f * cp[k];
+    double d1 = dot(sab, sap), d2 = dot(sac, sap);
     const double *q = NULL;
     double v = 0, w = 0;
     if (d1 <= 0 && d2 <= 0) q = a;
-    sub(x, b, bp);
-    double d3 = dot(ab, bp), d4 = dot(ac, bp);
+    double d3 = dot(sab, sbp), d4 = dot(sac, sbp);
     if (!q && d3 >= 0 && d4 <= d3) q = b;
-    sub(x, c, cp);
-    double d5 = dot(ab, cp), d6 = dot(ac, cp);
+    double d5 = dot(sab, scp), d6 = dot(sac, scp);
     if (!q && d6 >= 0 && d5 <= d6) q = c;
     if (q) {
         sub(x, q, r);
@@ -204,6 +215,19 @@ uint32_t hal3_flintstone(hal3_work *w, fl_hal3_node *nd, const hal3_piece *pc)
         memcpy(nd->ball[0], cq, sizeof cq);
         memcpy(nd->ball[1], cr, sizeof cr);
         nd->kind = uni ? FL_HAL3_BALL_UNION : FL_HAL3_TWO_BALLS;
+    }
+    /* The circumcentre is a floating construction: for a corner triangle seen almost edge-on
+     * from v_q (one vertex 1e20 away) its denominator rounds to 0 and the centre came out NaN
+     * with radius max(0, NaN) = 0: a ball that every NaN comparison called "may contain", so
+     * it pruned nothing, and NaN widths (seen while checking a fuzz_hal3 report). Any finite
+     * centre is correct, since the radius is measured to every vertex: use their centroid. */
+    for (int j = 0; j < 2; j++) {
+        double *c = nd->ball[j];
+        if (isfinite(c[0]) && isfinite(c[1]) && isfinite(c[2])) continue;
+        c[0] = c[1] = c[2] = 0;
+        for (size_t i = 0; i < V.n; i++)
+            for (int k = 0; k < 3; k++)
+                c[k] += vx(m, V.v[i])[k] / (double)V.n;
     }
     /* Radii: the largest squared distance to the vertices each ball must hold. */
     nd->ball[0][3] = nd->ball[1][3] = 0;

@@ -181,7 +181,8 @@ static int push_cb(constrict3_state *s, void *ctx, uint32_t t)
 }
 
 /* Algorithm 5.1, lines 3-8, followed by `extra` removals; when locked with points inside,
- * unlocking flips (§5.4, constrict3_unlock.c) and on. Returns FL_OK, or FL_ERR_NOMEM /
+ * unlocking flips (§5.4, constrict3_unlock.c) and on; when stalled with points inside, the
+ * chase of constrict3_chase.c (early flips, then removals near the inside points). Returns FL_OK, or FL_ERR_NOMEM /
  * FL_ERR_ALGORITHM (cancelled) through err. */
 static fl_status constrict(constrict3_state *s, size_t unique, const uint32_t *duplicate_of,
                            const fl_reconstruct3_options *opt, fl_reconstruction3 *out,
@@ -190,15 +191,25 @@ static fl_status constrict(constrict3_state *s, size_t unique, const uint32_t *d
     constrict3_heap h = {0};
     push_ctx ctx = {&h, opt->criterion};
     fl_status st = FL_OK;
+    constrict3_chase chase;
+    constrict3_chase_init(&chase, s->on_boundary);
     if (initial_boundary(s, &h, opt->criterion) != 0) goto nomem;
+    chase.last_on = s->on_boundary;
     size_t steps = 0;
     out->extra_removed = 0;
     for (;;) {
         int all_on = s->on_boundary >= unique && s->keep_on >= s->keep_total;
+        int chasing = s->on_boundary < unique && !opt->no_augment;
+        if (h.count == 0 && chasing) {
+            int rc = constrict3_chase_widen(s, &chase, &h);
+            if (rc < 0) goto nomem;
+            if (rc > 0) continue;
+        }
         if (h.count == 0) {
             if (all_on || opt->no_augment) break;
             size_t flips = 0;
-            if (constrict3_unlock(s, duplicate_of, push_cb, &ctx, &flips, &out->augmented_c0))
+            if (constrict3_unlock(s, duplicate_of, push_cb, &ctx, INFINITY, &flips,
+                                  &out->augmented_c0))
                 goto nomem;
             out->flip_count += flips;
             if (flips == 0) break; /* locked for good: the reason says why */
@@ -210,7 +221,14 @@ static fl_status constrict(constrict3_state *s, size_t unique, const uint32_t *d
             continue; /* stale: a newer entry exists if it is still removable */
         if (isnan(removal_key(s, e.tet, opt->criterion)))
             continue; /* its vertex or edge joined the boundary meanwhile (Alg. 5.1 line 5) */
+        if (chasing) {
+            int rc = constrict3_chase_before(s, &chase, &h, e, duplicate_of, push_cb, &ctx,
+                                             &out->flip_count, &out->augmented_c0);
+            if (rc < 0) goto nomem;
+            if (rc > 0) continue;
+        }
         if (remove_tet(s, &h, e.tet, opt->criterion) != 0) goto nomem;
+        if (constrict3_chase_after(s, &chase, &h) != 0) goto nomem;
         if (all_on) out->extra_removed++;
         debug_check(s, s->n, ++steps);
         if ((steps & 4095) == 0 && fl_progress(opt->progress, opt->progress_user, "constriction 3d",
@@ -222,9 +240,11 @@ static fl_status constrict(constrict3_state *s, size_t unique, const uint32_t *d
     assert(constrict3_boundary_is_sphere(s, s->n));
 done:
     constrict3_heap_free(&h);
+    constrict3_chase_free(&chase);
     return st;
 nomem:
     constrict3_heap_free(&h);
+    constrict3_chase_free(&chase);
     return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory in 3D constriction");
 }
 

@@ -72,14 +72,40 @@ fl_status constrict3_mark_kept(constrict3_state *s, const uint32_t *rep, const u
                                size_t count, fl_error *err);
 
 /* Unlocking (§5.4) by 2-3 flips, see constrict3_unlock.c. Called when no boundary tetrahedron
- * is removable but points remain inside: makes non-conflicting flips, each turning a region
+ * is removable but points remain inside (max_key = INFINITY), or when constriction is stalled
+ * (constrict3_chase.c; only flips whose key is below max_key): makes non-conflicting flips, each turning a region
  * tetrahedron with a boundary face into one whose opposite vertex is an inside point (so it is
  * removable), and pushes those onto the heap through push(). *flips receives how many were
  * made (0: none possible) and *c0 is lowered to the smallest c1' of the triangles added.
  * Returns 0, or -1 on NOMEM. */
 typedef int (*constrict3_push_fn)(constrict3_state *s, void *ctx, uint32_t t);
 int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constrict3_push_fn push,
-                      void *ctx, size_t *flips, double *c0);
+                      void *ctx, double max_key, size_t *flips, double *c0);
+
+/* Chasing the last inside points (constrict3_chase.c): while constriction is stalled, early
+ * unlocking flips that beat the heap's root, else removals only near the inside points. */
+typedef struct constrict3_chase {
+    size_t stall, limit; /* removals since a point last joined; stalled at `limit` */
+    size_t last_on;      /* s->on_boundary after the last removal */
+    int focus;           /* removals restricted to near[] */
+    size_t radius;       /* face steps from a tetrahedron with an inside vertex */
+    uint8_t *near;       /* per tetrahedron (the first near_count) */
+    size_t near_count;
+    constrict3_heap deferred; /* entries held back while focused */
+} constrict3_chase;
+
+void constrict3_chase_init(constrict3_chase *c, size_t on_boundary);
+void constrict3_chase_free(constrict3_chase *c);
+/* Before removing popped entry e (valid and removable) while points are inside: 0 = remove it,
+ * 1 = it was deferred or flips were made (pop again), -1 = NOMEM. Flips are added to *flips. */
+int constrict3_chase_before(constrict3_state *s, constrict3_chase *c, constrict3_heap *h,
+                            constrict3_entry e, const uint32_t *duplicate_of,
+                            constrict3_push_fn push, void *ctx, size_t *flips, double *c0);
+/* The heap ran empty: while focused with entries deferred, doubles the radius and returns them
+ * to the heap (1); 0 when there is nothing to widen; -1 on NOMEM. */
+int constrict3_chase_widen(constrict3_state *s, constrict3_chase *c, constrict3_heap *h);
+/* After a removal: a new boundary point ends the stall and the focus. 0, or -1 on NOMEM. */
+int constrict3_chase_after(const constrict3_state *s, constrict3_chase *c, constrict3_heap *h);
 
 /* 1 when face k of region tetrahedron t is on the boundary. */
 static inline int constrict3_face_is_boundary(const constrict3_state *s, uint32_t t, int k)

@@ -290,7 +290,7 @@ static int mark_near_inside(const constrict3_state *s, uint8_t **near)
 }
 
 int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constrict3_push_fn push,
-                      void *ctx, size_t *flips, double *c0)
+                      void *ctx, double max_key, size_t *flips, double *c0)
 {
     cand_vec v = {0};
     uint8_t *used = NULL;
@@ -317,6 +317,7 @@ int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constri
     if (!used || compact(s, duplicate_of, &u, &un, &map) != 0) goto done;
     for (size_t i = 0; i < v.count; i++) {
         const candidate *cd = &v.a[i];
+        if (!(cd->key < max_key)) break;
         if (used[cd->p] || s->version[cd->t1] != cd->v1 || s->version[cd->t2] != cd->v2 ||
             (cd->t3 != NONE && s->version[cd->t3] != cd->v3))
             continue; /* this point has its flip, or a tetrahedron was flipped already */

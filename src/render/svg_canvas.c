@@ -191,11 +191,21 @@ fl_status fl_svg_add_edges(fl_svg *svg, const double *xy, size_t n, const uint32
     return s;
 }
 
+/* A disc whose box overflows (centre -1e308, radius 1e308) made the picture's frame infinite and
+ * wrote "-inf" into the SVG (found by fuzz/fuzz_render.c). */
+static int disc_box_finite(const double *d)
+{
+    return isfinite(d[0] - d[2]) && isfinite(d[0] + d[2]) && isfinite(d[1] - d[2]) &&
+           isfinite(d[1] + d[2]);
+}
+
 fl_status fl_svg_add_disc(fl_svg *svg, double cx, double cy, double radius,
                           const fl_svg_style *style, fl_error *err)
 {
     if (!(radius >= 0)) return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: disc radius < 0");
     double v[3] = {cx, cy, radius};
+    if (!disc_box_finite(v))
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: the disc exceeds the double range");
     svg_item it = {.kind = DISC};
     return add_item(svg, &it, v, 3, style, "none", err);
 }
@@ -206,6 +216,8 @@ fl_status fl_svg_add_lens(fl_svg *svg, const double d0[3], const double d1[3],
     if (!d0 || !d1) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_svg_add_lens: NULL argument");
     if (!(d0[2] >= 0 && d1[2] >= 0))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: disc radius < 0");
+    if (!disc_box_finite(d0) || !disc_box_finite(d1))
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: a disc exceeds the double range");
     double v[6] = {d0[0], d0[1], d0[2], d1[0], d1[1], d1[2]};
     svg_item it = {.kind = LENS};
     return add_item(svg, &it, v, 6, style, "#cfe0f3", err);
@@ -218,6 +230,8 @@ fl_status fl_svg_add_disc_halfplane(fl_svg *svg, const double disc[3], const dou
     if (!disc || !a || !b)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "fl_svg_add_disc_halfplane: NULL argument");
     if (!(disc[2] >= 0)) return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: disc radius < 0");
+    if (!disc_box_finite(disc))
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "svg: the disc exceeds the double range");
     if (side != 1 && side != -1)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "svg: side must be +1 or -1");
     if (a[0] == b[0] && a[1] == b[1])
@@ -394,6 +408,11 @@ static int write_segment(FILE *fp, const svg_frame *f, const svg_item *it)
     double p[2], q[2];
     int large, shape = segment_shape(it->v, p, q, &large);
     if (shape == 0) return 0;
+    /* The chord's construction overflowed for a disc near the double range and "-inf" went
+     * into the file (found by fuzz/fuzz_render.c): draw the whole disc then (it contains the
+     * part). */
+    if (shape == 2 && !(isfinite(p[0]) && isfinite(p[1]) && isfinite(q[0]) && isfinite(q[1])))
+        shape = 1;
     if (shape == 1) {
         fprintf(fp, "<circle cx=\"%.7g\" cy=\"%.7g\" r=\"%.7g\"", fx(f, it->v[0]), fy(f, it->v[1]),
                 flen(f, it->v[2]));

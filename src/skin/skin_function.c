@@ -401,6 +401,12 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
     size_t cells = 1;
     for (double cell = fmax(0.5 * sk->reach, cbrt(vol / 262144.0));; cell *= 1.5) {
         sk->cell = cell;
+        /* A flat box (balls in a plane, one of them tiny: reach 7e-76) gave cells of 1e-26 and
+         * 1e27 of them along an axis, beyond size_t (UBSan; found by fuzz/fuzz_skin.c): grow
+         * the cells first until there are at most 2^20 (4 times the target above). */
+        double many = 1;
+        for (int c = 0; c < 3; c++) many *= floor((hi[c] - lo[c] + 2 * sk->reach) / cell) + 1;
+        if (many > 1048576.0) continue;
         cells = 1;
         for (int c = 0; c < 3; c++) {
             sk->dims[c] = (size_t)((hi[c] - lo[c] + 2 * sk->reach) / sk->cell) + 1;

@@ -476,6 +476,16 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
     fl_status st = fl_skin_function_new(xyzw, n, o.t, &g, err);
     m.g = g;
     if (!st) st = setup_grid(&m, xyzw, n, o.t, o.cell, err);
+    /* A spacing below the coordinates' resolution (a ball of radius 1e-75 at x = -8) makes grid
+     * points coincide after rounding, and the mesh came out open (16 boundary edges; found by
+     * fuzz/fuzz_skin.c). Refuse it. */
+    for (size_t i = 0; !st && i < n; i++)
+        for (int c = 0; !st && c < 3; c++)
+            if (m.h < 1e-12 * fabs(xyzw[4 * i + c]))
+                st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                             "skin: grid spacing %g is below the resolution of coordinate %g "
+                             "(a ball too small for its position)",
+                             m.h, xyzw[4 * i + c]);
     if (!st) st = collect_cubes(&m, xyzw, n, o.max_cubes, &cubes, err);
     if (!st) st = march_all(&m, &cubes, &o, err);
     if (!st && m.tri.count == 0)

@@ -31,16 +31,32 @@ static void estimate_tangent(const double *a, const double *v, const double *b, 
 {
     double d0[2] = {v[0] - a[0], v[1] - a[1]}, d1[2] = {b[0] - v[0], b[1] - v[1]};
     double l0 = hypot(d0[0], d0[1]), l1 = hypot(d1[0], d1[1]);
-    double w0 = 1, w1 = 1;
+    /* Divide, and scale the inverse weights by l0 l1: 1 / l and 1 / l^2 overflowed to inf for
+     * an edge of 2e-323 and the tangent became NaN (found by fuzz/fuzz_smooth.c). Only the
+     * direction of t matters. */
+    double u0[2] = {d0[0] / l0, d0[1] / l0}, u1[2] = {d1[0] / l1, d1[1] / l1};
     if (weighting == FL_G1_WEIGHT_UNIFORM) {
-        w0 = 1 / l0;
-        w1 = 1 / l1;
-    } else if (weighting == FL_G1_WEIGHT_INVERSE) {
-        w0 = 1 / (l0 * l0);
-        w1 = 1 / (l1 * l1);
+        t[0] = u0[0] + u1[0];
+        t[1] = u0[1] + u1[1];
+    } else if (weighting == FL_G1_WEIGHT_INVERSE) { /* u0 / l0 + u1 / l1, times l0 l1 */
+        t[0] = u0[0] * l1 + u1[0] * l0;
+        t[1] = u0[1] * l1 + u1[1] * l0;
+    } else {
+        t[0] = d0[0] + d1[0];
+        t[1] = d0[1] + d1[1];
     }
-    t[0] = w0 * d0[0] + w1 * d1[0];
-    t[1] = w0 * d0[1] + w1 * d1[1];
+    double tl = hypot(t[0], t[1]);
+    if (!(tl > 0 && isfinite(tl))) {
+        /* A turn of 180 degrees minus a rounding error (a and b 1e-208 apart, 6 from v): the
+         * weighted sum cancels to the zero vector and the tangent became NaN (found by
+         * fuzz/fuzz_smooth.c). Take the perpendicular of the bisector e_a + e_b of the unit
+         * vectors towards the neighbours (no cancellation: |e_a + e_b| is near 2), pointing
+         * towards b rather than a. */
+        double ea[2] = {-d0[0] / l0, -d0[1] / l0}, eb[2] = {d1[0] / l1, d1[1] / l1};
+        t[0] = -(ea[1] + eb[1]);
+        t[1] = ea[0] + eb[0];
+        if ((eb[0] - ea[0]) * t[0] + (eb[1] - ea[1]) * t[1] < 0) t[0] = -t[0], t[1] = -t[1];
+    }
     normalize2(t);
 }
 
@@ -65,6 +81,11 @@ static fl_status check_ring(const fl_polygon *p, size_t lo, size_t hi, fl_error 
         const double *a = p->xy + 2 * ring_prev(i, lo, hi), *b = p->xy + 2 * ring_next(i, lo, hi);
         if (!isfinite(v[0]) || !isfinite(v[1]))
             return fl_fail(err, FL_ERR_INPUT, NULL, -1, "vertex %zu is not finite", i);
+        /* Control points and samples are sums of products of coordinates: beyond 1e150 they
+         * overflowed to inf (found by fuzz/fuzz_smooth.c); the sweep's range. */
+        if (fabs(v[0]) > 1e150 || fabs(v[1]) > 1e150)
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                           "vertex %zu is beyond the supported range |x| <= 1e150", i);
         if (v[0] == b[0] && v[1] == b[1])
             return fl_fail(err, FL_ERR_INPUT, NULL, -1, "vertices %zu and %zu coincide", i,
                            ring_next(i, lo, hi));

@@ -1,5 +1,6 @@
 /* The mesh facts the surface schemes rely on: a closed, manifold, oriented triangle mesh
  * (checked with fl_mesh_check) and the pairing of its half-edges. */
+#include <math.h>
 #include <stdlib.h>
 
 #include "smooth/smooth_internal.h"
@@ -32,6 +33,12 @@ fl_status g1_require_closed_mesh(const fl_mesh *mesh, fl_error *err)
                      "the mesh has %zu vertices no triangle uses (no normal there)",
                      rep.unreferenced_vertices);
     fl_mesh_report_free(&rep);
+    /* Normals, control points and tessellations overflowed to inf on a mesh at 1e306 (found by
+     * fuzz/fuzz_smooth.c); the sweep's range. */
+    for (size_t i = 0; st == FL_OK && i < 3 * mesh->vertex_count; i++)
+        if (fabs(mesh->xyz[i]) > 1e150)
+            st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                         "vertex %zu is beyond the supported range |x| <= 1e150", i / 3);
     return st;
 }
 

@@ -20,7 +20,7 @@ fl_status fl_g1_vertex_normals(const fl_mesh *mesh, int weighting, double *norma
         g1_sub(mesh->xyz + 3 * v[1], mesh->xyz + 3 * v[0], e1);
         g1_sub(mesh->xyz + 3 * v[2], mesh->xyz + 3 * v[0], e2);
         g1_cross(e1, e2, c); /* |c| = twice the area (method 1 weights by area) */
-        double twice_area = sqrt(g1_dot(c, c)), w = 1;
+        double twice_area = g1_length(c), w = 1; /* |c|^2 underflowed at 1e-150 (fuzz_smooth) */
         if (twice_area == 0) continue; /* no direction to contribute */
         if (weighting == FL_G1_WEIGHT_UNIFORM) w = 1 / twice_area;
         if (weighting == FL_G1_WEIGHT_INVERSE) w = 2 / (twice_area * twice_area);

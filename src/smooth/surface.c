@@ -52,7 +52,7 @@ typedef struct macro_net {
 } macro_net;
 
 /* Step 2: the neighbour projected on the tangent plane at p, a fraction `tension` of the way. */
-static void edge_point(const double *p, const double *n, const double *q, double tension,
+void g1_edge_point(const double *p, const double *n, const double *q, double tension,
                        double *out)
 {
     double d[3];
@@ -121,8 +121,8 @@ static void boundary_curves(const fl_mesh *m, const double *normals, double tens
         uint32_t a = m->tri[h], b = m->tri[3 * (h / 3) + (h + 1) % 3];
         const double *pa = m->xyz + 3 * a, *pb = m->xyz + 3 * b;
         edge_ctrl c;
-        edge_point(pa, normals + 3 * a, pb, tension, c.p[0]);
-        edge_point(pb, normals + 3 * b, pa, tension, c.p[1]);
+        g1_edge_point(pa, normals + 3 * a, pb, tension, c.p[0]);
+        g1_edge_point(pb, normals + 3 * b, pa, tension, c.p[1]);
         if (quad && quad[h]) quadratic_edge(pa, normals + 3 * a, pb, normals + 3 * b, &c, &c);
         ep[h] = c;
         if (opp) {
@@ -163,7 +163,7 @@ static void macro_patch(const fl_mesh *m, const edge_ctrl *ep, size_t t, macro_n
  * to f + g = -1, which gives the thesis's e = 1 whenever e can be 1, and still a solution
  * (e = 0) when l and r are parallel, i.e. both cross the edge at right angles. Returns 0 when
  * f + g = 0 (l and r on the same side: the orientation condition fails). */
-static int edge_coefficients(const double *d, const double *l, const double *r, const double *n,
+int g1_edge_coefficients(const double *d, const double *l, const double *r, const double *n,
                              double *e, double *f, double *g)
 {
     double c[3];
@@ -213,8 +213,8 @@ static int solve_edge(const edge_frame *q, double *l1, double *r1, double *condi
     g1_sub(q->l2, q->m[3], l3);
     g1_sub(q->r2, q->m[3], r3);
     double e0, f0, g0, e3, f1, g1;
-    if (!edge_coefficients(d0, la, ra, q->n0, &e0, &f0, &g0) ||
-        !edge_coefficients(back, l3, r3, q->n3, &e3, &f1, &g1))
+    if (!g1_edge_coefficients(d0, la, ra, q->n0, &e0, &f0, &g0) ||
+        !g1_edge_coefficients(back, l3, r3, q->n3, &e3, &f1, &g1))
         return -1;
     /* e3 (M2 - M3) + f1 (L2 - M3) + g1 (R2 - M3) = 0 is eq. 9.3d with e1 = -(e3 + f1 + g1). The
      * end-3 triple is then scaled to make (f1, g1) as close as possible to (f0, g0): on a
@@ -385,9 +385,9 @@ static fl_status build(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_s
                        fl_error *err)
 {
     size_t nt = m->triangle_count, nv = m->vertex_count;
-    int split = o->scheme == FL_G1_THREE_SPLIT;
-    if (nt > (UINT32_MAX - nv) / 3) return fl_fail(err, FL_ERR_INPUT, NULL, -1, "mesh too big");
-    if (allocate(s, split ? 3 * nt : nt, nv))
+    int split = o->scheme == FL_G1_THREE_SPLIT, six = o->scheme == FL_G1_SIX_SPLIT;
+    if (nt > (UINT32_MAX - nv) / 6) return fl_fail(err, FL_ERR_INPUT, NULL, -1, "mesh too big");
+    if (allocate(s, six ? 6 * nt : split ? 3 * nt : nt, nv))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     s->node_count = split ? nv + nt : nv;
     fl_status st = fl_g1_vertex_normals(m, o->weighting, s->normal, err);
@@ -396,6 +396,7 @@ static fl_status build(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_s
             g1_repair_normals(m, s->normal, &s->orientation_repairs, &s->orientation_failures, err);
     if (st) return st;
     double tension = o->tension > 0 ? o->tension : 1.0 / 3.0;
+    if (six) return g1_six_split(m, s->normal, tension, s, err);
     macro_net *nets = fl_alloc_array(nt, sizeof *nets);
     edge_ctrl *ep = fl_alloc_array(3 * nt, sizeof *ep);
     uint32_t *opp = NULL;
@@ -430,7 +431,7 @@ fl_status fl_g1_surface_build(const fl_mesh *mesh, const fl_g1_surface_options *
     if (out) memset(out, 0, sizeof *out);
     if (!mesh || !out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "NULL argument");
     fl_g1_surface_options o = opt ? *opt : (fl_g1_surface_options){0};
-    if (o.scheme < 0 || o.scheme > FL_G1_MACRO || o.weighting < 0 ||
+    if (o.scheme < 0 || o.scheme > FL_G1_SIX_SPLIT || o.weighting < 0 ||
         o.weighting > FL_G1_WEIGHT_INVERSE || !(o.tension >= 0) || o.tension >= 1)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "bad surface options (scheme, weighting, tension in [0, 1))");

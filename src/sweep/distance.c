@@ -87,6 +87,20 @@ double fl_sweep_triangle_closest(const double *p, const double *a, const double 
     sub3(p, a, ap);
     sub3(p, b, bp);
     sub3(p, c, cp);
+    /* The barycentrics are scale invariant, but the products below reach the 4th power of the
+     * coordinates: from edges of ~1e77 on, va, vb, vc overflowed (inf - inf = NaN) and every
+     * large triangle fell back to its edges, a distance far above the true one (found by
+     * fuzz/fuzz_hausdorff.c at the documented |x| <= 1e150). Rescale the differences by a power
+     * of two (exact) so that they are near 1; `closest` below uses the unscaled points. */
+    double m = 0;
+    for (int i = 0; i < 3; i++)
+        m = fmax(m, fmax(fmax(fabs(ab[i]), fabs(ac[i])), fmax(fabs(ap[i]), fmax(fabs(bp[i]),
+                                                                                  fabs(cp[i])))));
+    if (m > 0x1p60 || (m > 0 && m < 0x1p-60)) {
+        double f = ldexp(1.0, -ilogb(m));
+        for (int i = 0; i < 3; i++)
+            ab[i] *= f, ac[i] *= f, ap[i] *= f, bp[i] *= f, cp[i] *= f;
+    }
     double d1 = dot3(ab, ap), d2 = dot3(ac, ap);
     double d3 = dot3(ab, bp), d4 = dot3(ac, bp);
     double d5 = dot3(ab, cp), d6 = dot3(ac, cp);
@@ -109,7 +123,7 @@ double fl_sweep_triangle_closest(const double *p, const double *a, const double 
     double s = vb / denom, t = vc / denom;
     set_bary(bary, 1 - s - t, s, t);
     for (int i = 0; i < 3; i++)
-        closest[i] = a[i] + s * ab[i] + t * ac[i];
+        closest[i] = a[i] + s * (b[i] - a[i]) + t * (c[i] - a[i]);
     return dist2(p, closest);
 }
 

@@ -57,7 +57,9 @@ static fl_status dir_init(hd_run *run, hd_dir *d, const hd_shape *a, const hd_sh
         if (d->used[v]) {
             st = hd_measure(run, d, a->xyz + 3 * v, &index, err);
         } else {
+            /* Not a sample: keeps its position so that a kept field can measure it. */
             hd_sample none = {{0, 0, 0}, {0, 0, 0}, 0, FL_SWEEP_NONE};
+            memcpy(none.p, a->xyz + 3 * v, sizeof none.p);
             fl_vec_push(&d->samples, &none, 1); /* reserved above */
         }
         if (st == FL_OK && (v & 4095) == 4095 &&

@@ -21,6 +21,16 @@ fl_status hd_field_from_dir(const hd_dir *dir, fl_hausdorff_field *f, fl_error *
     for (size_t i = 0; i < nv; i++) {
         memcpy(f->mesh.xyz + 3 * i, smp[i].p, 3 * sizeof(double));
         f->distance[i] = smp[i].d;
+        if (smp[i].elem == FL_SWEEP_NONE) { /* a vertex no simplex uses: measure it now (the
+                                             * field promises every vertex's distance) */
+            fl_closest r;
+            fl_status st = fl_sweep_cursor_closest(dir->cursor, smp[i].p, 0.0, &r, err);
+            if (st) return st;
+            double d2 = 0;
+            for (int k = 0; k < dir->dim; k++)
+                d2 += (smp[i].p[k] - r.point[k]) * (smp[i].p[k] - r.point[k]);
+            f->distance[i] = sqrt(d2);
+        }
     }
     const hd_simplex *leaf = dir->leaves.data;
     for (size_t t = 0; t < nt; t++)

@@ -160,8 +160,11 @@ static double mean_square_bound(const double *a, int k, double K, double *mu_out
         if (m == k || s[m] <= mu) break;
     }
     double q = mu + K / 2;
+    /* (a - mu)^2 underflowed to 0 for distances near 1e-117 (4th powers of lengths), which made
+     * the bound of a segment between two zero-distance corners 0 instead of K/4 (found by
+     * fuzz/fuzz_hausdorff.c); dividing first keeps it in range. */
     for (int i = 0; i < k; i++)
-        if (a[i] > mu) q += (a[i] - mu) * (a[i] - mu) / (2 * K);
+        if (a[i] > mu) q += (a[i] - mu) * ((a[i] - mu) / (2 * K));
     *mu_out = mu;
     return fmax(q, amax);
 }

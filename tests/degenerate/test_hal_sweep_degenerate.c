@@ -104,6 +104,30 @@ static void test_hal2_certified_error_near_duplicate(void)
     }
 }
 
+/* A vertex at 1e308 overflows the disc widths to NaN (found by fuzz/fuzz_hal2.c in CI: the NaN
+ * comparison picked the missing side's vertex, the tree grew past its node array). The build
+ * must fall back to plain discs; every vertex and the inclusion answers stay exact. */
+static void test_hal2_overflowing_coordinates(void)
+{
+    double xy[] = {-1.125, -1.125, -7.125, -1.75, -8, 1.4821969375237396e-323, 7.75, 1e308};
+    size_t rs[2], ps[2];
+    fl_polygon p;
+    one_ring(&p, xy, 4, rs, ps);
+    fl_hal2 hal;
+    fl_error err;
+    CHECK_STATUS(fl_hal2_build(&p, NULL, &hal, &err), FL_OK, &err);
+    CHECK_MSG(hal.node_count <= p.vertex_count, "%zu nodes for %zu vertices",
+              (size_t)hal.node_count, p.vertex_count);
+    double q[][2] = {{-1.125, -1.125}, {7.75, 1e308}, {-4, 0}, {0, 0}, {-100, 0}, {5, 5e307}};
+    for (size_t k = 0; k < sizeof q / sizeof *q; k++) {
+        uint8_t w;
+        CHECK_STATUS(fl_hal2_contains(&hal, q[k], 1, &w, &err), FL_OK, &err);
+        CHECK_MSG(w == oracle_where(&p, q[k]), "(%g, %g): hal %d oracle %d", q[k][0], q[k][1], w,
+                  oracle_where(&p, q[k]));
+    }
+    fl_hal2_free(&hal);
+}
+
 static void expect_sweep(const char *name, fl_mesh *m, const double *q, size_t nq)
 {
     fl_sweep *s;
@@ -196,6 +220,7 @@ int main(void)
     fl_test_case cases[] = {
         FL_TEST_CASE(test_hal2_degenerate),
         FL_TEST_CASE(test_hal2_certified_error_near_duplicate),
+        FL_TEST_CASE(test_hal2_overflowing_coordinates),
         FL_TEST_CASE(test_sweep_degenerate),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);

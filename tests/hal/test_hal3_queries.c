@@ -5,6 +5,7 @@
 #include "fl_test.h"
 #include "hal/hal3_internal.h"
 #include "hal3_meshes.h"
+#include "hal3_oracle.h"
 #include "mesh/intersect.h"
 
 static const double *V(const fl_mesh *m, uint32_t v)
@@ -12,45 +13,9 @@ static const double *V(const fl_mesh *m, uint32_t v)
     return m->xyz + 3 * (size_t)v;
 }
 
-static int brute_on(const double *a, const double *b, const double *c, const double *x)
-{
-    if (fl_orient3d(a, b, c, x) != 0) return 0;
-    for (int ax = 0; ax < 3; ax++) {
-        int i = (ax + 1) % 3, j = (ax + 2) % 3;
-        double A[2] = {a[i], a[j]}, B[2] = {b[i], b[j]}, C[2] = {c[i], c[j]}, X[2] = {x[i], x[j]};
-        int s = fl_orient2d(A, B, C);
-        if (s)
-            return fl_orient2d(A, B, X) * s >= 0 && fl_orient2d(B, C, X) * s >= 0 &&
-                   fl_orient2d(C, A, X) * s >= 0;
-    }
-    return 0;
-}
-
-/* orient2d in the xy-plane of (a, b, x + (e, e^2)) */
-static int pert(const double *a, const double *b, const double *x)
-{
-    double A[2] = {a[0], a[1]}, B[2] = {b[0], b[1]}, X[2] = {x[0], x[1]};
-    int o = fl_orient2d(A, B, X);
-    if (o) return o;
-    if (A[1] != B[1]) return A[1] > B[1] ? 1 : -1;
-    return B[0] > A[0] ? 1 : B[0] < A[0] ? -1 : 0;
-}
-
-/* Ray in +z: crossing when the perturbed xy-projection is inside and the plane is above x. */
 static uint8_t brute_inside(const fl_mesh *m, const double *x)
 {
-    int parity = 0;
-    for (size_t t = 0; t < m->triangle_count; t++) {
-        const double *a = V(m, m->tri[3 * t]), *b = V(m, m->tri[3 * t + 1]),
-                     *c = V(m, m->tri[3 * t + 2]);
-        if (brute_on(a, b, c, x)) return FL_HAL3_BOUNDARY;
-        double A[2] = {a[0], a[1]}, B[2] = {b[0], b[1]}, C[2] = {c[0], c[1]};
-        int s = fl_orient2d(A, B, C);
-        if (!s || pert(a, b, x) != s || pert(b, c, x) != s || pert(c, a, x) != s) continue;
-        /* n_z has the sign s; x is below the plane (fl_orient3d > 0 means on the -n side) */
-        parity ^= fl_orient3d(a, b, c, x) * s > 0;
-    }
-    return parity ? FL_HAL3_INSIDE : FL_HAL3_OUTSIDE;
+    return hal3_oracle_inside(m, x);
 }
 
 static fl_mesh query_mesh(int i)
@@ -196,12 +161,106 @@ static void test_hal3_contains_rejects_non_finite_queries(void)
     fl_mesh_free(&m);
 }
 
+/* The inclusion ray runs along the axis towards the nearest face of the bounding box
+ * (hal3_contains.c), so each of the six directions must meet its own degenerate cases: queries
+ * near each face whose two other coordinates are a vertex's (the ray runs through a vertex),
+ * the mean of an edge's end points (through an edge, on the cube's grid exactly), or the
+ * cube's grid values (along a face). Property: answers equal the +z brute force, and all six
+ * directions are exercised (the test recomputes the nearest face). */
+static void test_hal3_inclusion_rays_along_every_axis_through_vertices_and_edges(void)
+{
+    for (int i = 0; i < 3; i++) {
+        fl_mesh m = query_mesh(i);
+        fl_hal3 hal;
+        fl_error err;
+        CHECK_STATUS(fl_hal3_build(&m, NULL, &hal, &err), FL_OK, &err);
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (size_t v = 0; v < m.vertex_count; v++)
+            for (int k = 0; k < 3; k++) {
+                lo[k] = fmin(lo[k], m.xyz[3 * v + k]);
+                hi[k] = fmax(hi[k], m.xyz[3 * v + k]);
+            }
+        size_t n = 1200, used[6] = {0, 0, 0, 0, 0, 0}, diff = 0;
+        double *q = malloc(3 * n * sizeof(double));
+        uint8_t *w = malloc(n);
+        for (size_t j = 0; j < n; j++) {
+            int k = (int)(j % 3), side = (int)(j / 3 % 2), kind = (int)(j / 6 % 3);
+            uint32_t t = (uint32_t)(hal3_rand() * (double)m.triangle_count);
+            const double *a = V(&m, m.tri[3 * t]), *b = V(&m, m.tri[3 * t + 1]);
+            double *x = q + 3 * j;
+            for (int c = 0; c < 3; c++) {
+                x[c] = kind == 0 ? a[c] : kind == 1 ? 0.5 * (a[c] + b[c])
+                                                   : floor(a[c] * 2 + 0.5) / 2;
+            }
+            double f = 0.15 * hal3_rand();
+            x[k] = side ? hi[k] - f * (hi[k] - lo[k]) : lo[k] + f * (hi[k] - lo[k]);
+        }
+        CHECK_STATUS(fl_hal3_contains(&hal, q, n, w, &err), FL_OK, &err);
+        for (size_t j = 0; j < n; j++) {
+            const double *x = q + 3 * j;
+            int best = 0;
+            double d = INFINITY;
+            for (int k = 0; k < 3; k++) {
+                if (hi[k] - x[k] < d) d = hi[k] - x[k], best = 2 * k;
+                if (x[k] - lo[k] < d) d = x[k] - lo[k], best = 2 * k + 1;
+            }
+            used[best]++;
+            diff += brute_inside(&m, x) != w[j];
+        }
+        CHECK_MSG(diff == 0, "mesh %d: %zu of %zu answers differ from brute force", i, diff, n);
+        for (int k = 0; k < 6; k++) CHECK_MSG(used[k] > 0, "mesh %d: direction %d unused", i, k);
+        free(q);
+        free(w);
+        fl_hal3_free(&hal);
+        fl_mesh_free(&m);
+    }
+}
+
+/* The ray walk stores node bounds as floats rounded outwards (hal3_contains.c). Far from the
+ * origin a float's spacing (1 at 1e7) is far larger than the mesh's detail (1e-3): every bound
+ * and query coordinate is rounded, and a skip must still be proven (a bound moved inwards past
+ * the query's rounding would cut off triangles the ray crosses). Property: on a noisy blob of
+ * size 1e-3 at (1e7, -3e6, 5e5) the answers for points near the surface (vertices moved by up to
+ * 1e-5, and vertices themselves) equal the brute force's. */
+static void test_hal3_inclusion_far_from_the_origin_equals_brute_force(void)
+{
+    fl_mesh m = hal3_blob(2, 1.0, 1.0, 1.0, 0.15);
+    const double off[3] = {1e7, -3e6, 5e5};
+    for (size_t v = 0; v < m.vertex_count; v++)
+        for (int k = 0; k < 3; k++) m.xyz[3 * v + k] = m.xyz[3 * v + k] * 1e-3 + off[k];
+    fl_hal3 hal;
+    fl_error err;
+    CHECK_STATUS(fl_hal3_build(&m, NULL, &hal, &err), FL_OK, &err);
+    size_t n = 1000, diff = 0, count[3] = {0, 0, 0};
+    double *q = malloc(3 * n * sizeof(double));
+    uint8_t *w = malloc(n);
+    for (size_t j = 0; j < n; j++) {
+        const double *a = V(&m, (uint32_t)(hal3_rand() * (double)m.vertex_count));
+        for (int k = 0; k < 3; k++)
+            q[3 * j + k] = a[k] + (j % 4 ? (hal3_rand() - 0.5) * 2e-5 : 0.0);
+    }
+    CHECK_STATUS(fl_hal3_contains(&hal, q, n, w, &err), FL_OK, &err);
+    for (size_t j = 0; j < n; j++) {
+        uint8_t b = brute_inside(&m, q + 3 * j);
+        diff += b != w[j];
+        count[b]++;
+    }
+    CHECK_MSG(diff == 0, "%zu of %zu answers differ from brute force", diff, n);
+    CHECK(count[0] > 0 && count[1] > 0 && count[2] > 0);
+    free(q);
+    free(w);
+    fl_hal3_free(&hal);
+    fl_mesh_free(&m);
+}
+
 int main(void)
 {
     static const fl_test_case cases[] = {
         FL_TEST_CASE(test_hal3_inclusion_equals_brute_force_on_random_and_surface_points),
         FL_TEST_CASE(test_hal3_intersecting_pairs_equal_brute_force),
         FL_TEST_CASE(test_hal3_contains_rejects_non_finite_queries),
+        FL_TEST_CASE(test_hal3_inclusion_rays_along_every_axis_through_vertices_and_edges),
+        FL_TEST_CASE(test_hal3_inclusion_far_from_the_origin_equals_brute_force),
     };
     return fl_test_run(cases, sizeof cases / sizeof cases[0]);
 }

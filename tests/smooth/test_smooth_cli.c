@@ -73,7 +73,8 @@ static void test_smooth_cli_errors(void)
     cli_write_file("smooth_cli_open.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
     CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_open.off"), 2);
     CHECK(strstr(r.err, "not closed") != NULL);
-    CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_open.off --scheme six-split"), 1);
+    CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_open.off --scheme six-split"), 2);
+    CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_open.off --scheme seven-split"), 1);
     CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_open.off --tension 2"), 1);
     CHECK_EQ_INT(cli_run(&r, "smooth"), 1);
     CHECK_EQ_INT(cli_run(&r, "smooth --help"), 0);

@@ -1,0 +1,478 @@
+/* The cubic six-split of thesis §9.8, in a form that is consistent (docs/smooth.md explains
+ * why the equations as printed have no regular solution and what changed).
+ *
+ * Every macro triangle (V0, V1, V2) is split at its edge midpoints m_i = P(1/2, 1/2, 0) ... and
+ * its centre O = P(1/3, 1/3, 1/3) into six micro triangles: 2i = (V_i, m_i, O) and
+ * 2i + 1 = (m_i, V_i+1, O), m_i the midpoint of edge i (V_i -> V_i+1). Names follow Figure 9.7
+ * where it can be reconstructed: on the spoke from V_i to O the control points are
+ * V_i, N_i, Q_i, O; on the spoke from m_i to O they are m_i, Nm_i, Qm_i, O; the centre control
+ * point of micro triangle p is P_p; along a macro edge the half-edge from vertex A to m has
+ * A, K_A, Y_A, m.
+ *
+ * Step 0: the multipliers are constant along every spoke (eq. 9.8), a = 1, b = c on the vertex
+ * spokes and h, k = l on the midpoint spokes with k = -(2b + 1)/(3b + 2). The only b for which
+ * the midpoint spokes are consistent at m (where Y_A - m = -(Y_B - m), so eq. 9.8a reads
+ * h (Nm - m) = 0) is b = -2/3, h = 0: then the six patches are C1 over the macro domain, and
+ * steps 4, 6 and 7 are the C1 conditions:
+ *   N_i = (2/3)(K + K') - V_i / 3              (eq. 9.14, K, K' on the two edges at V_i)
+ *   Q_i = (2/3)(P_2i + P_2i-1) - N_i / 3       (eq. 9.13a)
+ *   Nm_i = (P_2i + P_2i+1) / 2, Qm_i = (Q_i + Q_i+1) / 2   (eq. 9.12a, 9.12b with h = 0)
+ *   O = (Q_0 + Q_1 + Q_2) / 3                  (step 6; the thesis's "O = (Q1 + Q3 + Q5)/3")
+ * Step 5 (the minimal-displacement solve) then makes each macro edge G1: the two half-edges
+ * get linear multipliers (eq. 9.3 on each half, the end at V fixed by the vertex tangent plane,
+ * the end at m by the tangent plane there) and the free points around m -- m itself, Y_A, and
+ * the four centres P next to the edge -- move as little as possible from their subdivision
+ * values under the five independent vector equations. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "smooth/smooth_internal.h"
+
+static int ix(int i, int j)
+{
+    return (3 - i) * (4 - i) / 2 + (3 - i - j);
+}
+
+/* The blossom (polar form) of the cubic with control points net at barycentric u1, u2, u3:
+ * the control points of any sub-triangle are blossom values of its corners (§9.5, Goldman). */
+static void blossom(const double net[10][3], const double *u1, const double *u2, const double *u3,
+                    double *out)
+{
+    const double *arg[3] = {u1, u2, u3};
+    double a[10][3], b[10][3];
+    memcpy(a, net, sizeof a);
+    for (int n = 3; n > 0; n--) {
+        const double *w = arg[3 - n];
+        for (int i = 0; i < n; i++)
+            for (int j = 0; i + j < n; j++) {
+                int to = (n - 1 - i) * (n - i) / 2 + (n - 1 - i - j);
+                int f0 = (n - i - 1) * (n - i) / 2 + (n - i - 1 - j);  /* (i + 1, j) */
+                int f1 = (n - i) * (n - i + 1) / 2 + (n - i - j - 1);  /* (i, j + 1) */
+                int f2 = (n - i) * (n - i + 1) / 2 + (n - i - j);      /* (i, j) */
+                for (int d = 0; d < 3; d++)
+                    b[to][d] = w[0] * a[f0][d] + w[1] * a[f1][d] + w[2] * a[f2][d];
+            }
+        memcpy(a, b, sizeof a);
+    }
+    memcpy(out, a[0], 3 * sizeof(double));
+}
+
+/* Per macro triangle: the macro patch (steps 1-3), the vertex-spoke points N and the six
+ * micro centres P (subdivision values, then step 5). */
+typedef struct six_tri {
+    double net[10][3];
+    double n[3][3];
+    double p[6][3];
+} six_tri;
+
+/* Per half-edge h: the midpoint m and the points next to it on the half from h's start (ya)
+ * and from its end (yb); the two half-edges of an edge hold the same values, swapped. */
+typedef struct six_edge {
+    double m[3], ya[3], yb[3];
+} six_edge;
+
+/* A point as a known vector plus a combination of the six unknowns of an edge solve. */
+typedef struct lin {
+    double c[6], k[3];
+} lin;
+
+static lin known(const double *p)
+{
+    lin r = {{0}, {p[0], p[1], p[2]}};
+    return r;
+}
+
+static lin var2(int i, double a, int j, double b)
+{
+    lin r = {{0}, {0, 0, 0}};
+    r.c[i] += a;
+    r.c[j] += b;
+    return r;
+}
+
+/* Row += coef * (p - q). */
+static void acc(double *row, double *rhs, double coef, const lin *p, const lin *q)
+{
+    for (int i = 0; i < 6; i++)
+        row[i] += coef * (p->c[i] - q->c[i]);
+    for (int d = 0; d < 3; d++)
+        rhs[d] -= coef * (p->k[d] - q->k[d]);
+}
+
+/* The four equations of eq. 9.3 on one half-edge, written as rows over the unknowns:
+ * m[0..3] the boundary points (M0 at the vertex), l[0..2], r[0..2] the cross rows of the two
+ * sides; (e0, f0, g0) at M0, (e1, f1, g1) at M3. C0 holds by the choice of the end triple at
+ * M0 and C3 is added once an edge by the caller, so this adds C1 and C2. */
+static void half_edge_rows(const lin *m, const lin *l, const lin *r, const double *c0,
+                           const double *c1, double rows[][6], double rhs[][3])
+{
+    double e0 = c0[0], f0 = c0[1], g0 = c0[2], e1 = c1[0], f1 = c1[1], g1 = c1[2];
+    acc(rows[0], rhs[0], e1, &m[1], &m[0]);
+    acc(rows[0], rhs[0], 2 * e0, &m[2], &m[1]);
+    acc(rows[0], rhs[0], f1, &l[0], &m[0]);
+    acc(rows[0], rhs[0], 2 * f0, &l[1], &m[1]);
+    acc(rows[0], rhs[0], g1, &r[0], &m[0]);
+    acc(rows[0], rhs[0], 2 * g0, &r[1], &m[1]);
+    acc(rows[1], rhs[1], 2 * e1, &m[2], &m[1]);
+    acc(rows[1], rhs[1], e0, &m[3], &m[2]);
+    acc(rows[1], rhs[1], 2 * f1, &l[1], &m[1]);
+    acc(rows[1], rhs[1], f0, &l[2], &m[2]);
+    acc(rows[1], rhs[1], 2 * g1, &r[1], &m[1]);
+    acc(rows[1], rhs[1], g0, &r[2], &m[2]);
+}
+
+/* Solves G z = r for the 5 x 5 Gram matrix G = A A^T (symmetric positive semidefinite) by
+ * symmetric elimination with the largest remaining diagonal as pivot; pivots below tol end
+ * it (rank deficient: those z are 0). Any solution z gives the same A^T z when the system is
+ * consistent, so x = x_old + A^T z is still the least displacement. Returns the rank. */
+static int solve_gram(double g[5][5], double r[5][3], double tol, double z[5][3])
+{
+    int perm[5] = {0, 1, 2, 3, 4}, rank = 5;
+    for (int c = 0; c < 5; c++) {
+        int p = c;
+        for (int i = c + 1; i < 5; i++)
+            if (g[i][i] > g[p][p]) p = i;
+        if (!(g[p][p] > tol)) {
+            rank = c;
+            break;
+        }
+        for (int j = 0; j < 5; j++) { /* swap rows and columns c, p */
+            double t = g[c][j];
+            g[c][j] = g[p][j];
+            g[p][j] = t;
+        }
+        for (int i = 0; i < 5; i++) {
+            double t = g[i][c];
+            g[i][c] = g[i][p];
+            g[i][p] = t;
+        }
+        for (int d = 0; d < 3; d++) {
+            double t = r[c][d];
+            r[c][d] = r[p][d];
+            r[p][d] = t;
+        }
+        int t = perm[c];
+        perm[c] = perm[p];
+        perm[p] = t;
+        for (int i = c + 1; i < 5; i++) {
+            double f = g[i][c] / g[c][c];
+            for (int j = c; j < 5; j++)
+                g[i][j] -= f * g[c][j];
+            for (int d = 0; d < 3; d++)
+                r[i][d] -= f * r[c][d];
+        }
+    }
+    double y[5][3] = {{0}};
+    for (int i = rank - 1; i >= 0; i--)
+        for (int d = 0; d < 3; d++) {
+            double s = r[i][d];
+            for (int j = i + 1; j < rank; j++)
+                s -= g[i][j] * y[j][d];
+            y[i][d] = s / g[i][i];
+        }
+    for (int i = 0; i < 5; i++)
+        memcpy(z[perm[i]], y[i], sizeof y[i]);
+    return rank;
+}
+
+/* Least displacement x = x_old + A^T (A A^T)^-1 (b - A x_old), coordinate by coordinate (the
+ * equations have scalar coefficients). Returns the rank of A (5 when independent). */
+static int min_displacement(double a[5][6], double b[5][3], double x[6][3])
+{
+    double g[5][5], r[5][3], z[5][3], scale = 0;
+    for (int i = 0; i < 5; i++) {
+        for (int j = 0; j < 5; j++) {
+            g[i][j] = 0;
+            for (int c = 0; c < 6; c++)
+                g[i][j] += a[i][c] * a[j][c];
+        }
+        scale = fmax(scale, g[i][i]);
+        for (int d = 0; d < 3; d++) {
+            r[i][d] = b[i][d];
+            for (int c = 0; c < 6; c++)
+                r[i][d] -= a[i][c] * x[c][d];
+        }
+    }
+    int rank = solve_gram(g, r, 1e-12 * scale, z);
+    for (int c = 0; c < 6; c++)
+        for (int d = 0; d < 3; d++)
+            for (int i = 0; i < 5; i++)
+                x[c][d] += a[i][c] * z[i][d];
+    return rank;
+}
+
+static void project(const double *p, const double *o, const double *n, double *out)
+{
+    double d[3];
+    g1_sub(p, o, d);
+    double s = g1_dot(d, n);
+    for (int k = 0; k < 3; k++)
+        out[k] = p[k] - s * n[k];
+}
+
+/* The end triple at m in the frame of M3 (as surface.c's solve_edge does for eq. 9.3d),
+ * turned into eq. 9.3d's (e1, f1, g1) and scaled so (f1, g1) is closest to (f0, g0). */
+static int end_at_midpoint(const double *m, const double *y, const double *nl, const double *nr,
+                           const double *n, const double *c0, double *c1)
+{
+    double back[3], l3[3], r3[3], e3;
+    g1_sub(y, m, back);
+    g1_sub(nl, m, l3);
+    g1_sub(nr, m, r3);
+    if (!g1_edge_coefficients(back, l3, r3, n, &e3, &c1[1], &c1[2])) return 0;
+    c1[0] = -(e3 + c1[1] + c1[2]);
+    double rho = (c0[1] * c1[1] + c0[2] * c1[2]) / (c1[1] * c1[1] + c1[2] * c1[2]);
+    if (rho > 0 && isfinite(rho))
+        for (int k = 0; k < 3; k++)
+            c1[k] *= rho;
+    return 1;
+}
+
+static const double half[3][3] = {{0.5, 0.5, 0}, {0, 0.5, 0.5}, {0.5, 0, 0.5}};
+static const double third[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+static const double unit[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+/* K: the point after vertex `at` (0..2) of t on its edge towards side `fwd` (1: edge at, else
+ * edge at - 1), i.e. the half-edge subdivision (V + E) / 2 of the boundary cubic. */
+static void k_point(const fl_mesh *m, const six_tri *T, size_t t, int at, int fwd, double *out)
+{
+    const double *v = m->xyz + 3 * m->tri[3 * t + (size_t)at];
+    const double *e;
+    if (fwd)
+        e = T->net[at == 0 ? ix(2, 1) : at == 1 ? ix(0, 2) : ix(1, 0)];
+    else
+        e = T->net[at == 0 ? ix(2, 0) : at == 1 ? ix(1, 2) : ix(0, 1)];
+    for (int d = 0; d < 3; d++)
+        out[d] = (v[d] + e[d]) / 2;
+}
+
+/* Step 5 on the macro edge of half-edge h (triangle t, edge k) and its twin (u, edge j). */
+static int solve_edge(const fl_mesh *m, const double *normals, six_tri *tris, six_edge *edges,
+                      size_t h, size_t h2)
+{
+    size_t t = h / 3, u = h2 / 3;
+    int k = (int)(h % 3), j = (int)(h2 % 3), k1 = (k + 1) % 3, j1 = (j + 1) % 3;
+    six_tri *T = tris + t, *U = tris + u;
+    const double *A = m->xyz + 3 * m->tri[h], *B = m->xyz + 3 * m->tri[3 * t + (size_t)k1];
+    double ka[3], kb[3];
+    k_point(m, T, t, k, 1, ka);
+    k_point(m, T, t, k1, 0, kb);
+    /* subdivision values: m, Y_A and the four centres */
+    double x[6][3], nt[3], nu[3], nm[3], y0[3], ylp[3], yrp[3], nl0[3], nr0[3];
+    blossom(T->net, half[k], half[k], half[k], x[1]);
+    blossom(T->net, unit[k], half[k], half[k], x[0]);
+    memcpy(x[2], T->p[2 * k], sizeof x[2]);
+    memcpy(x[3], U->p[2 * j + 1], sizeof x[3]);
+    memcpy(x[4], T->p[2 * k + 1], sizeof x[4]);
+    memcpy(x[5], U->p[2 * j], sizeof x[5]);
+    /* the tangent plane at m: mean of the two macro patches' normals there */
+    double tn[10][3], un[10][3];
+    memcpy(tn, T->net, sizeof tn);
+    memcpy(un, U->net, sizeof un);
+    fl_g1_patch_eval(&tn[0][0], half[k][0], half[k][1], half[k][2], NULL, nt);
+    fl_g1_patch_eval(&un[0][0], half[j][0], half[j][1], half[j][2], NULL, nu);
+    for (int d = 0; d < 3; d++) {
+        nm[d] = nt[d] + nu[d];
+        nl0[d] = (x[2][d] + x[4][d]) / 2;
+        nr0[d] = (x[3][d] + x[5][d]) / 2;
+    }
+    if (!(g1_normalize(nm) > 1e-12)) return -1;
+    project(x[0], x[1], nm, y0);
+    project(nl0, x[1], nm, ylp);
+    project(nr0, x[1], nm, yrp);
+    double yb0[3];
+    for (int d = 0; d < 3; d++)
+        yb0[d] = 2 * x[1][d] - y0[d];
+    /* end triples: at A and B from the vertex tangent planes (eq. 9.3a), at m from the plane
+     * there (eq. 9.3d) */
+    double ca[3], cb[3], cma[3], cmb[3], d0[3], l0[3], r0[3];
+    g1_sub(ka, A, d0);
+    g1_sub(T->n[k], A, l0);
+    g1_sub(U->n[j1], A, r0);
+    if (!g1_edge_coefficients(d0, l0, r0, normals + 3 * m->tri[h], &ca[0], &ca[1], &ca[2]))
+        return -1;
+    g1_sub(kb, B, d0);
+    g1_sub(T->n[k1], B, l0);
+    g1_sub(U->n[j], B, r0);
+    if (!g1_edge_coefficients(d0, l0, r0, normals + 3 * m->tri[3 * t + (size_t)k1], &cb[0],
+                              &cb[1], &cb[2]))
+        return -1;
+    if (!end_at_midpoint(x[1], y0, ylp, yrp, nm, ca, cma) ||
+        !end_at_midpoint(x[1], yb0, ylp, yrp, nm, cb, cmb))
+        return -1;
+    /* unknowns: 0 Y_A, 1 m, 2 P(t, A side), 3 P(u, A side), 4 P(t, B side), 5 P(u, B side) */
+    lin Ya = var2(0, 1, 0, 0), M = var2(1, 1, 1, 0), Yb = var2(1, 2, 0, -1);
+    lin NL = var2(2, 0.5, 4, 0.5), NR = var2(3, 0.5, 5, 0.5);
+    lin ma[4] = {known(A), known(ka), Ya, M}, mb[4] = {known(B), known(kb), Yb, M};
+    lin la[3] = {known(T->n[k]), var2(2, 1, 2, 0), NL}, ra[3] = {known(U->n[j1]), var2(3, 1, 3, 0), NR};
+    lin lb[3] = {known(T->n[k1]), var2(4, 1, 4, 0), NL}, rb[3] = {known(U->n[j]), var2(5, 1, 5, 0), NR};
+    double a[5][6] = {{0}}, b[5][3] = {{0}};
+    half_edge_rows(ma, la, ra, ca, cma, a, b);
+    half_edge_rows(mb, lb, rb, cb, cmb, a + 2, b + 2);
+    /* C3 at m (eq. 9.3d); the B half's C3 is the same relation of the same four points. */
+    acc(a[4], b[4], cma[0], &M, &Ya);
+    acc(a[4], b[4], cma[1], &NL, &Ya);
+    acc(a[4], b[4], cma[2], &NR, &Ya);
+    int rank = min_displacement(a, b, x);
+    if (rank == 5) min_displacement(a, b, x); /* one step of iterative refinement */
+    six_edge *E = edges + h, *F = edges + h2;
+    memcpy(E->m, x[1], sizeof E->m);
+    memcpy(E->ya, x[0], sizeof E->ya);
+    for (int d = 0; d < 3; d++)
+        E->yb[d] = 2 * x[1][d] - x[0][d];
+    memcpy(F->m, E->m, sizeof F->m);
+    memcpy(F->ya, E->yb, sizeof F->ya);
+    memcpy(F->yb, E->ya, sizeof F->yb);
+    memcpy(T->p[2 * k], x[2], sizeof x[2]);
+    memcpy(U->p[2 * j + 1], x[3], sizeof x[3]);
+    memcpy(T->p[2 * k + 1], x[4], sizeof x[4]);
+    memcpy(U->p[2 * j], x[5], sizeof x[5]);
+    return rank < 5;
+}
+
+/* Steps 1-4 for triangle t: macro net, vertex-spoke points N (eq. 9.14 with b = -2/3) and the
+ * subdivision values of the six centres. ep holds the shared boundary edge points. */
+static void macro_six(const fl_mesh *m, const double (*ep)[2][3], size_t t, six_tri *T)
+{
+    const uint32_t *v = m->tri + 3 * t;
+    double se[3] = {0, 0, 0}, sv[3] = {0, 0, 0};
+    const int at[3][2] = {{ix(2, 1), ix(1, 2)}, {ix(0, 2), ix(0, 1)}, {ix(1, 0), ix(2, 0)}};
+    for (int k = 0; k < 3; k++) {
+        memcpy(T->net[k == 0 ? ix(3, 0) : k == 1 ? ix(0, 3) : ix(0, 0)], m->xyz + 3 * v[k],
+               3 * sizeof(double));
+        memcpy(T->net[at[k][0]], ep[3 * t + (size_t)k][0], 3 * sizeof(double));
+        memcpy(T->net[at[k][1]], ep[3 * t + (size_t)k][1], 3 * sizeof(double));
+        for (int d = 0; d < 3; d++) {
+            se[d] += ep[3 * t + (size_t)k][0][d] + ep[3 * t + (size_t)k][1][d];
+            sv[d] += m->xyz[3 * v[k] + d];
+        }
+    }
+    for (int d = 0; d < 3; d++)
+        T->net[ix(1, 1)][d] = se[d] / 4 - sv[d] / 6;
+    for (int k = 0; k < 3; k++) {
+        double kf[3], kbk[3];
+        k_point(m, T, t, k, 1, kf);
+        k_point(m, T, t, k, 0, kbk);
+        for (int d = 0; d < 3; d++)
+            T->n[k][d] = 2.0 / 3 * (kf[d] + kbk[d]) - m->xyz[3 * v[k] + d] / 3;
+        blossom(T->net, unit[k], half[k], third, T->p[2 * k]);
+        blossom(T->net, half[k], unit[(k + 1) % 3], third, T->p[2 * k + 1]);
+    }
+}
+
+static void put(double *ctrl, int i, int j, const double *p)
+{
+    memcpy(ctrl + 3 * ix(i, j), p, 3 * sizeof(double));
+}
+
+/* Steps 6-7 and the six micro patches of triangle t. */
+static void emit_six(const fl_mesh *m, const six_tri *T, const six_edge *edges,
+                     const uint32_t *edge_id, size_t t, fl_g1_surface *s)
+{
+    const uint32_t *v = m->tri + 3 * t;
+    double q[3][3], qm[3][3], nmid[3][3], o[3] = {0, 0, 0};
+    for (int i = 0; i < 3; i++) {
+        int prev = (2 * i + 5) % 6;
+        for (int d = 0; d < 3; d++) {
+            q[i][d] = 2.0 / 3 * (T->p[2 * i][d] + T->p[prev][d]) - T->n[i][d] / 3;
+            nmid[i][d] = (T->p[2 * i][d] + T->p[2 * i + 1][d]) / 2;
+            o[d] += q[i][d] / 3;
+        }
+    }
+    for (int i = 0; i < 3; i++)
+        for (int d = 0; d < 3; d++)
+            qm[i][d] = (q[i][d] + q[(i + 1) % 3][d]) / 2;
+    uint32_t centre = (uint32_t)(m->vertex_count + t);
+    for (int i = 0; i < 3; i++) {
+        int i1 = (i + 1) % 3;
+        size_t h = 3 * t + (size_t)i;
+        const six_edge *E = edges + h;
+        uint32_t mid = (uint32_t)(m->vertex_count + m->triangle_count + edge_id[h]);
+        double kf[3], kb[3];
+        k_point(m, T, t, i, 1, kf);
+        k_point(m, T, t, i1, 0, kb);
+        size_t p0 = 6 * t + 2 * (size_t)i, p1 = p0 + 1;
+        double *c = s->ctrl + 30 * p0;
+        put(c, 3, 0, m->xyz + 3 * v[i]);
+        put(c, 2, 1, kf);
+        put(c, 1, 2, E->ya);
+        put(c, 0, 3, E->m);
+        put(c, 2, 0, T->n[i]);
+        put(c, 1, 1, T->p[2 * i]);
+        put(c, 0, 2, nmid[i]);
+        put(c, 1, 0, q[i]);
+        put(c, 0, 1, qm[i]);
+        put(c, 0, 0, o);
+        s->corner[3 * p0] = v[i];
+        s->corner[3 * p0 + 1] = mid;
+        s->corner[3 * p0 + 2] = centre;
+        c = s->ctrl + 30 * p1;
+        put(c, 3, 0, E->m);
+        put(c, 2, 1, E->yb);
+        put(c, 1, 2, kb);
+        put(c, 0, 3, m->xyz + 3 * v[i1]);
+        put(c, 2, 0, nmid[i]);
+        put(c, 1, 1, T->p[2 * i + 1]);
+        put(c, 0, 2, T->n[i1]);
+        put(c, 1, 0, qm[i]);
+        put(c, 0, 1, q[i1]);
+        put(c, 0, 0, o);
+        s->corner[3 * p1] = mid;
+        s->corner[3 * p1 + 1] = v[i1];
+        s->corner[3 * p1 + 2] = centre;
+        s->macro[p0] = s->macro[p1] = (uint32_t)t;
+    }
+}
+
+fl_status g1_six_split(const fl_mesh *m, const double *normals, double tension, fl_g1_surface *s,
+                       fl_error *err)
+{
+    size_t nt = m->triangle_count;
+    uint32_t *opp = NULL;
+    fl_status st = g1_opposite_half_edges(m, &opp, err);
+    if (st) return st;
+    double(*ep)[2][3] = fl_alloc_array(3 * nt, sizeof *ep);
+    six_tri *tris = fl_alloc_array(nt, sizeof *tris);
+    six_edge *edges = fl_alloc_array(3 * nt, sizeof *edges);
+    uint32_t *edge_id = fl_alloc_array(3 * nt, sizeof *edge_id);
+    if (!ep || !tris || !edges || !edge_id) {
+        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+        goto done;
+    }
+    /* step 2, once an edge so both triangles hold bit-identical boundary curves */
+    uint32_t ne = 0;
+    for (size_t h = 0; h < 3 * nt; h++) {
+        if (opp[h] < h) continue;
+        uint32_t a = m->tri[h], b = m->tri[3 * (h / 3) + (h + 1) % 3];
+        g1_edge_point(m->xyz + 3 * a, normals + 3 * a, m->xyz + 3 * b, tension, ep[h][0]);
+        g1_edge_point(m->xyz + 3 * b, normals + 3 * b, m->xyz + 3 * a, tension, ep[h][1]);
+        memcpy(ep[opp[h]][0], ep[h][1], sizeof ep[h][1]);
+        memcpy(ep[opp[h]][1], ep[h][0], sizeof ep[h][0]);
+        edge_id[h] = edge_id[opp[h]] = ne++;
+    }
+    s->node_count = m->vertex_count + nt + ne;
+    for (size_t t = 0; t < nt; t++)
+        macro_six(m, (const double(*)[2][3])ep, t, tris + t);
+    s->singular_edges = 0;
+    for (size_t h = 0; h < 3 * nt; h++) {
+        if (opp[h] < h) continue;
+        int r = solve_edge(m, normals, tris, edges, h, opp[h]);
+        if (r < 0) {
+            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
+                         "six-split: no tangent plane at a vertex or edge midpoint (two "
+                         "triangles project onto one line there)");
+            goto done;
+        }
+        s->singular_edges += (size_t)r;
+    }
+    for (size_t t = 0; t < nt; t++)
+        emit_six(m, tris + t, edges, edge_id, t, s);
+done:
+    free(opp);
+    free(ep);
+    free(tris);
+    free(edges);
+    free(edge_id);
+    return st;
+}

@@ -30,6 +30,14 @@ static int cmp_face(const void *pa, const void *pb)
     return 0;
 }
 
+static int cmp_ball(const void *pa, const void *pb)
+{
+    const double *a = pa, *b = pb;
+    for (int i = 0; i < 4; i++)
+        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+    return 0;
+}
+
 static double power(const double *ball, const double x[3])
 {
     double d0 = x[0] - ball[0], d1 = x[1] - ball[1], d2 = x[2] - ball[2];
@@ -132,6 +140,28 @@ static fl_status star_faces(const fl_balls *b, const fl_rt3 *rt, double tol, fl_
     return FL_OK;
 }
 
+/* 1 when the floating-point orthogonal ball o of tetrahedron t is orthogonal to its four balls
+ * up to rounding. Symmetric inputs (a cube's protecting balls mirrored across an edge) give
+ * slivers whose four centres are coplanar and co-orthogonal up to the last bit of the input:
+ * their orthocentre is then decided by rounding noise, and fl_rt3's Cramer solve returned balls
+ * of radius 0.9 in the unit cube that are not even orthogonal to their own balls (residual
+ * 0.04) and contain other ball centres, against Theorem 4 (docs/skin.md). In exact arithmetic
+ * such a degenerate sliver's ball lies on the Voronoi edge dual to the four co-circular balls,
+ * and the power to a point along that edge is linear in the position, so the ball is covered
+ * by the balls of the edge's two ends: dropping it loses nothing the verification would not
+ * catch anyway. */
+static int orthogonal_to_tet(const double *xyzw, const uint32_t *t, const double *o)
+{
+    for (int i = 0; i < 4; i++) {
+        const double *z = xyzw + 4 * (size_t)t[i];
+        double d2 = (o[0] - z[0]) * (o[0] - z[0]) + (o[1] - z[1]) * (o[1] - z[1]) +
+                    (o[2] - z[2]) * (o[2] - z[2]);
+        double res = d2 - z[3] - o[3], mag = d2 + fabs(z[3]) + fabs(o[3]);
+        if (!(fabs(res) <= 1e-9 * mag)) return 0;
+    }
+    return 1;
+}
+
 fl_status skin_eps_orthogonal_balls(skin_eps_grid *g, const fl_balls *b, fl_balls *perp,
                                     fl_balls *star, fl_error *err)
 {
@@ -148,8 +178,18 @@ fl_status skin_eps_orthogonal_balls(skin_eps_grid *g, const fl_balls *b, fl_ball
     for (size_t i = 0; i < rt.tet_count && st == FL_OK; i++) {
         const double *o = rt.ortho + 4 * i;
         if (!(o[3] > 0) || !isfinite(o[0] + o[1] + o[2] + o[3])) continue;
+        if (!orthogonal_to_tet(b->xyzw, rt.tet + 4 * i, o)) continue;
         if (skin_eps_inside(g, o) && fl_vec_push(&vp, o, 1))
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory (B_perp)");
+    }
+    /* cospherical balls (the cube's symmetric ones) give one Voronoi vertex several times */
+    if (st == FL_OK && vp.count > 1) {
+        double *d = vp.data;
+        qsort(d, vp.count, 4 * sizeof(double), cmp_ball);
+        size_t u = 1;
+        for (size_t i = 1; i < vp.count; i++)
+            if (cmp_ball(d + 4 * i, d + 4 * (u - 1))) memmove(d + 4 * u++, d + 4 * i, 4 * sizeof(double));
+        vp.count = u;
     }
     if (st == FL_OK && fl_vec_push(&vs, vp.data, vp.count))
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory (B*)");

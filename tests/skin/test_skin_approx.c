@@ -1,9 +1,9 @@
 /* ε-approximation of a polyhedron by balls and a skin (Cheng & Tan §4-6): the result is checked
  * here independently of the library's own verification: the skin mesh is closed, manifold and
- * has the input's Euler characteristic (fl_mesh_check), every B_perp centre is inside the object
- * (winding number computed here), every protecting ball's radius is <= epsilon (weights <= eps^2,
- * the eps-SAC of §5 step 1), and bad input or a too-small epsilon fails with a clear error instead
- * of running without bound. */
+ * has the input's Euler characteristic (fl_mesh_check), every B_perp ball lies inside the object
+ * and is farther than orthogonal from every protecting ball (brute force here), every
+ * protecting ball's radius is <= epsilon (weights <= eps^2, the eps-SAC of §5 step 1), and bad
+ * input or a too-small epsilon fails with a clear error instead of running without bound. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,12 +25,31 @@ static fl_mesh cube(void)
     return m;
 }
 
-/* A point of the closed unit cube (convex: coordinate tests suffice). Closed, because the
- * symmetric protecting balls of the cube give orthocentres exactly on a face (a known problem,
- * docs/skin.md: Theorem 4 says an orthogonal ball cannot meet the surface). */
-static int in_cube(const double *p)
+/* The ball (x, y, z, w) lies in the closed unit cube (convex: its box suffices). Theorem 4:
+ * an orthogonal ball of an eps-SAC does not cross the surface, so a B_perp ball whose centre
+ * is inside lies inside. (The first version found centres exactly on a face: fl_rt3's
+ * orthocentres of the cube's symmetric slivers were rounding noise; docs/skin.md.) */
+static int ball_in_cube(const double *b)
 {
-    return p[0] >= 0 && p[0] <= 1 && p[1] >= 0 && p[1] <= 1 && p[2] >= 0 && p[2] <= 1;
+    double r = sqrt(b[3]);
+    for (int c = 0; c < 3; c++)
+        if (!(b[c] - r >= -1e-12 && b[c] + r <= 1 + 1e-12 && b[c] > 0 && b[c] < 1)) return 0;
+    return 1;
+}
+
+/* min over the protecting balls b of pi(p, b) = |p - z_b|^2 - w_p - w_b: a Voronoi vertex's
+ * orthogonal ball is orthogonal to its four balls and farther than orthogonal from the others
+ * (the regular triangulation's empty-ball property), so this is >= 0 up to rounding. */
+static double min_orthogonal_power(const double *p, const fl_balls *b)
+{
+    double best = HUGE_VAL;
+    for (size_t i = 0; i < b->count; i++) {
+        const double *q = b->xyzw + 4 * i;
+        double d = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                   (p[2] - q[2]) * (p[2] - q[2]) - p[3] - q[3];
+        if (d < best) best = d;
+    }
+    return best;
 }
 
 static void test_cube_is_approximated_within_epsilon(void)
@@ -52,12 +71,15 @@ static void test_cube_is_approximated_within_epsilon(void)
     fl_mesh_report_free(&rep);
     for (size_t i = 0; i < a.surface.count; i++)
         CHECK(a.surface.xyzw[4 * i + 3] <= eps * eps);
-    size_t outside = 0;
+    size_t outside = 0, not_empty = 0;
     for (size_t i = 0; i < a.perp.count; i++) {
         const double *p = a.perp.xyzw + 4 * i;
-        outside += !in_cube(p);
+        outside += !ball_in_cube(p);
+        not_empty += !(min_orthogonal_power(p, &a.surface) >= -1e-9);
     }
-    CHECK_MSG(outside == 0, "%zu B_perp centres outside the cube", outside);
+    CHECK_MSG(outside == 0, "%zu B_perp balls not inside the cube", outside);
+    CHECK_MSG(not_empty == 0, "%zu B_perp balls closer than orthogonal to a protecting ball",
+              not_empty);
     CHECK(a.perp.count > 0 && a.star.count >= a.perp.count);
     fl_skin_approx_free(&a);
 }

@@ -52,36 +52,65 @@ static double min_orthogonal_power(const double *p, const fl_balls *b)
     return best;
 }
 
-static void test_cube_is_approximated_within_epsilon(void)
+/* The checks shared by every object: verified, closed 2-manifold sphere within epsilon,
+ * protecting radii <= epsilon, B_perp balls inside the object (ball_inside, computed from the
+ * object's definition) and power-empty against the protecting balls. */
+static void check_approximation(const fl_mesh *m, double eps, int (*ball_inside)(const double *),
+                                const char *name)
 {
-    fl_mesh m = cube();
     fl_skin_approx a;
     fl_error err;
-    double eps = 0.5;
-    CHECK_STATUS(fl_skin_approx_build(&m, eps, NULL, &a, &err), FL_OK, &err);
-    CHECK_MSG(a.verified, "not verified: hausdorff %g euler %lld/%lld", a.hausdorff[1], a.euler,
-              a.euler_input);
+    CHECK_STATUS(fl_skin_approx_build(m, eps, NULL, &a, &err), FL_OK, &err);
+    CHECK_MSG(a.verified, "%s: not verified: hausdorff %g euler %lld/%lld", name, a.hausdorff[1],
+              a.euler, a.euler_input);
     CHECK(a.hausdorff[1] <= eps);
     fl_mesh_report rep;
     fl_mesh_check_options co = {0};
     co.skip_self_intersections = 1;
     CHECK_STATUS(fl_mesh_check(&a.skin, &co, &rep, &err), FL_OK, &err);
-    CHECK_MSG(rep.closed && rep.manifold && rep.euler == 2, "closed %d manifold %d euler %lld",
-              rep.closed, rep.manifold, rep.euler);
+    CHECK_MSG(rep.closed && rep.manifold && rep.euler == 2, "%s: closed %d manifold %d euler %lld",
+              name, rep.closed, rep.manifold, rep.euler);
     fl_mesh_report_free(&rep);
     for (size_t i = 0; i < a.surface.count; i++)
         CHECK(a.surface.xyzw[4 * i + 3] <= eps * eps);
     size_t outside = 0, not_empty = 0;
     for (size_t i = 0; i < a.perp.count; i++) {
         const double *p = a.perp.xyzw + 4 * i;
-        outside += !ball_in_cube(p);
+        outside += !ball_inside(p);
         not_empty += !(min_orthogonal_power(p, &a.surface) >= -1e-9);
     }
-    CHECK_MSG(outside == 0, "%zu B_perp balls not inside the cube", outside);
-    CHECK_MSG(not_empty == 0, "%zu B_perp balls closer than orthogonal to a protecting ball",
-              not_empty);
+    CHECK_MSG(outside == 0, "%s: %zu B_perp balls not inside", name, outside);
+    CHECK_MSG(not_empty == 0, "%s: %zu B_perp balls closer than orthogonal to a protecting ball",
+              name, not_empty);
     CHECK(a.perp.count > 0 && a.star.count >= a.perp.count);
     fl_skin_approx_free(&a);
+}
+
+static void test_cube_is_approximated_within_epsilon(void)
+{
+    fl_mesh m = cube();
+    check_approximation(&m, 0.5, ball_in_cube, "cube");
+}
+
+/* The octahedron |x| + |y| + |z| <= 1: a ball is inside iff its centre's distance to the
+ * nearest face plane, (1 - |c|_1) / sqrt(3), is at least its radius. */
+static int ball_in_octahedron(const double *b)
+{
+    double l1 = fabs(b[0]) + fabs(b[1]) + fabs(b[2]);
+    return (1 - l1) / sqrt(3.0) >= sqrt(b[3]) - 1e-12;
+}
+
+static void test_octahedron_is_approximated_within_epsilon(void)
+{
+    static const double xyz[] = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
+    static const uint32_t tri[] = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
+                                   2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+    fl_mesh m = {0};
+    m.vertex_count = 6;
+    m.triangle_count = 8;
+    m.xyz = (double *)xyz;
+    m.tri = (uint32_t *)tri;
+    check_approximation(&m, 0.6, ball_in_octahedron, "octahedron");
 }
 
 static void test_bad_input_fails_cleanly(void)
@@ -106,6 +135,7 @@ int main(void)
     static const fl_test_case cases[] = {
         FL_TEST_CASE(test_bad_input_fails_cleanly),
         FL_TEST_CASE(test_cube_is_approximated_within_epsilon),
+        FL_TEST_CASE(test_octahedron_is_approximated_within_epsilon),
     };
     return fl_test_run(cases, sizeof cases / sizeof cases[0]);
 }

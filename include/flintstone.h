@@ -1732,6 +1732,64 @@ typedef struct fl_skin_stats {
 fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
                        fl_skin_stats *stats, fl_error *err);
 
+/* ---- ε-approximation of a polyhedron by balls (Cheng & Tan §5, §6.2; docs/skin.md) ----
+ * B: protecting balls centred on the mesh, each of radius min(0.45 lgs(centre), rho) with lgs
+ * the local gap size (§4) and rho = 0.8 epsilon, covering every vertex, edge and triangle, so
+ * conditions C1/C2 of Theorem 5 hold. They are placed by bisecting edges and 4-splitting
+ * triangles instead of at restricted Voronoi vertices (Algorithm 1); counts therefore differ
+ * from the paper's. The result is also verified: the certified Hausdorff distance between the
+ * triangulated skin^t(B*) and the input is <= epsilon, their Euler characteristics agree and
+ * the skin mesh is closed and manifold, else rho shrinks (x0.7) and the construction repeats.
+ * B_perp (§5): orthogonal balls of the regular-triangulation tetrahedra of B whose orthocentre
+ * lies inside the object (ray parity, winding number near degeneracies) and whose weight is
+ * positive.
+ * B* (§6.2): B_perp plus the orthogonal balls (negative weight) of the vertices, edges and
+ * triangles of the regular triangulation whose focus lies in their power face at negative
+ * power (the alpha simplices of B with z_X^perp non-empty). */
+
+/* Options of fl_skin_approx; all zero is the default. */
+typedef struct fl_skin_approx_options {
+    double t;           /* shrink factor of the verified skin, in (0, 1); 0 means 0.5 */
+    double cell;        /* mesher grid spacing; 0 means rho / 2 */
+    int max_rounds;     /* constructions tried (rho = 0.8 eps, then x0.7 each); 0 means 3 */
+    size_t max_balls;   /* refuse more protecting balls than this (FL_ERR_INPUT); 0 means 1e6 */
+    double budget_seconds; /* Hausdorff budget per round (still certified); 0 means 60 */
+    fl_progress_fn progress; /* may be NULL; stages "skin balls", "skin", "hausdorff" */
+    void *progress_user;
+} fl_skin_approx_options;
+
+/* The result of fl_skin_approx. Free with fl_skin_approx_free. */
+typedef struct fl_skin_approx {
+    fl_balls surface;      /* B: the protecting balls centred on the surface, radii <= rho */
+    size_t boundary_balls; /* the first boundary_balls of B are centred on vertices and edges */
+    fl_balls perp;         /* B_perp: the union of these approximates the object (§5) */
+    fl_balls star;         /* B*: B_perp and the negative-weight orthogonal balls (§6.2) */
+    fl_mesh skin;          /* triangulation of skin^t(B*) (fl_skin_mesh) */
+    double rho;            /* radius of the surface balls of the last round */
+    double t, cell;        /* shrink factor and grid spacing of the skin mesh */
+    double hausdorff[2];   /* certified [lower, upper] Hausdorff distance skin mesh <-> input */
+    long long euler;       /* Euler characteristic of the skin mesh */
+    long long euler_input; /* Euler characteristic of the input */
+    int rounds;            /* constructions done */
+    int closed_manifold;   /* the skin mesh is closed, 2-manifold and oriented */
+    int verified;          /* 1 iff hausdorff[1] <= epsilon, euler == euler_input and
+                              closed_manifold */
+} fl_skin_approx;
+
+/* Approximates the closed, oriented 2-manifold triangle mesh `mesh` (any genus; fl_mesh_check
+ * must find it closed, manifold, oriented, without self-intersections) within epsilon > 0.
+ * Returns FL_OK with out->verified = 1 when a round met both checks, FL_OK with verified = 0
+ * (and the last round's result) when none did in max_rounds. Errors: FL_ERR_USAGE (NULL
+ * pointers, t outside (0, 1), negative options), FL_ERR_INPUT (epsilon not finite and > 0,
+ * mesh not a closed oriented manifold or self-intersecting, the skin grid too large),
+ * FL_ERR_ALGORITHM "cancelled", FL_ERR_NOMEM. On failure *out is zeroed. */
+fl_status fl_skin_approx_build(const fl_mesh *mesh, double epsilon,
+                               const fl_skin_approx_options *opt, fl_skin_approx *out,
+                               fl_error *err);
+
+/* Releases everything in *approx and zeroes it; NULL or a zeroed struct is a no-op. */
+void fl_skin_approx_free(fl_skin_approx *approx);
+
 /* end of skin */
 
 

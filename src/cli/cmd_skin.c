@@ -1,5 +1,7 @@
 /* flintstone skin --balls BALLS [--t T] [--cell H] [-o SKIN.off] [--json]
- * A closed triangle mesh of the skin surface skin^t(B) of a ball set (Cheng & Tan §6.1). */
+ * flintstone skin MESH --epsilon E [--t T] [--cell H] [-o SKIN.off] [--json]
+ * A closed triangle mesh of the skin surface skin^t(B) of a ball set (Cheng & Tan §6.1), or of
+ * the verified epsilon-approximation skin^t(B*) of a polyhedron (§4-6, fl_skin_approx_build). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,26 +12,35 @@
 
 static const char *usage_text =
     "usage: flintstone skin --balls BALLS [--t T] [--cell H] [-o SKIN.off] [--json] [--quiet]\n"
+    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [-o SKIN.off] [--json]\n"
     "\n"
     "Triangulates the skin surface skin^t(B) of a ball set: the boundary of the union of the\n"
     "convex combinations of the balls, each shrunk to sqrt(t) times its radius. BALLS holds one\n"
     "ball a line, \"x y z w\" with w the squared radius (.xyzw .txt .csv). The mesh is closed,\n"
     "oriented and 2-manifold; its vertices lie on the skin to rounding.\n"
     "\n"
-    "  --t T      shrink factor in (0, 1), default 0.5\n"
-    "  --cell H   grid spacing (default: sqrt(t) times the smallest radius / 4, smaller for\n"
-    "             thin necks); features thinner than H can be missed\n"
-    "  -o FILE    the mesh (.off .obj .ply .stl)\n"
-    "  --json     balls, vertices, faces, euler, genus, closed, manifold, cell,\n"
-    "             max_vertex_offset, seconds\n"
+    "With MESH (a closed, oriented, 2-manifold triangle mesh without self-intersections) and\n"
+    "--epsilon, the balls are B* of Cheng & Tan's approximation of the object within E (see\n"
+    "flintstone balls) and the skin is verified: its certified Hausdorff distance to MESH is\n"
+    "<= E and its Euler characteristic is MESH's, else the command fails.\n"
     "\n"
-    "Approximating a polyhedron by balls within epsilon (Cheng & Tan §4-5) is not available.\n"
+    "  --balls B    the ball set\n"
+    "  --epsilon E  with MESH: the Hausdorff tolerance (> 0)\n"
+    "  --t T        shrink factor in (0, 1), default 0.5\n"
+    "  --cell H     grid spacing (default: sqrt(t) times the smallest radius / 4, smaller for\n"
+    "               thin necks; with MESH: 0.4 E); features thinner than H can be missed\n"
+    "  -o FILE      the mesh (.off .obj .ply .stl)\n"
+    "  --json       --balls: balls, vertices, faces, euler, genus, closed, manifold, cell,\n"
+    "               max_vertex_offset, seconds; MESH: balls (|B*|), faces, euler,\n"
+    "               euler_input, epsilon, hausdorff_upper, rounds, cell, seconds\n"
     "\n"
-    "example: flintstone skin --balls balls.xyzw --t 0.5 -o skin.off --json\n";
+    "example: flintstone skin --balls balls.xyzw --t 0.5 -o skin.off --json\n"
+    "example: flintstone skin cube.off --epsilon 0.5 -o skin.off --json\n";
 
 typedef struct skin_args {
-    const char *balls;
-    double t, cell;
+    const char *balls, *mesh;
+    double t, cell, epsilon;
+    int has_epsilon;
 } skin_args;
 
 static int parse(int argc, char **argv, cli_common *c, skin_args *a)
@@ -39,7 +50,8 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
         if (r < 0) return 1;
         if (r > 0) continue;
         const char *o = argv[i];
-        int value = !strcmp(o, "--balls") || !strcmp(o, "--t") || !strcmp(o, "--cell");
+        int value = !strcmp(o, "--balls") || !strcmp(o, "--t") || !strcmp(o, "--cell") ||
+                    !strcmp(o, "--epsilon");
         if (value && i + 1 >= argc) return cli_fail(1, "skin: %s needs a value", o);
         if (!strcmp(o, "--balls")) {
             a->balls = argv[++i];
@@ -49,13 +61,18 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
         } else if (!strcmp(o, "--cell")) {
             if (cli_parse_double(argv[++i], &a->cell) || !(a->cell > 0) || !isfinite(a->cell))
                 return cli_fail(1, "skin: --cell takes a number > 0");
+        } else if (!strcmp(o, "--epsilon")) {
+            /* a bad value is bad input to the approximation (FL_ERR_INPUT), as in the library */
+            if (cli_parse_double(argv[++i], &a->epsilon) || !(a->epsilon > 0) ||
+                !isfinite(a->epsilon))
+                return cli_fail(2, "skin: --epsilon takes a finite number > 0");
+            a->has_epsilon = 1;
         } else if (o[0] == '-' && o[1]) {
             return cli_fail(1, "skin: unknown option '%s' (see --help)", o);
+        } else if (!a->mesh) {
+            a->mesh = o;
         } else {
-            return cli_fail(1,
-                            "skin: meshing a polyhedron's ball approximation ('%s') is not "
-                            "available; give --balls BALLS",
-                            o);
+            return cli_fail(1, "skin: unexpected argument '%s'", o);
         }
     }
     return 0;
@@ -86,16 +103,72 @@ static void print_summary(const cli_common *c, const fl_balls *b, const fl_mesh 
     }
 }
 
+/* skin MESH --epsilon E: the verified skin^t(B*) of the approximation of MESH. */
+static int skin_of_mesh(const cli_common *c, const skin_args *a)
+{
+    fl_error err;
+    fl_mesh mesh = {0};
+    fl_skin_approx ap;
+    memset(&ap, 0, sizeof ap);
+    cli_progress prog;
+    cli_progress_init(&prog, c);
+    double t0 = cli_now();
+    fl_status st = fl_read_mesh(a->mesh, &mesh, &err);
+    if (st == FL_OK) {
+        fl_skin_approx_options opt = {0};
+        opt.t = a->t;
+        opt.cell = a->cell;
+        opt.progress = cli_progress_fn;
+        opt.progress_user = &prog;
+        st = fl_skin_approx_build(&mesh, a->epsilon, &opt, &ap, &err);
+        cli_progress_done(&prog);
+    }
+    double seconds = cli_now() - t0;
+    if (st == FL_OK && !ap.verified)
+        st = fl_fail(&err, FL_ERR_ALGORITHM, NULL, -1,
+                     "skin: not verified after %d rounds (Hausdorff <= %g, Euler %lld vs %lld "
+                     "of the input); try a smaller epsilon than %g",
+                     ap.rounds, ap.hausdorff[1], ap.euler, ap.euler_input, a->epsilon);
+    if (st == FL_OK && c->output) st = fl_write_mesh(c->output, &ap.skin, &err);
+    if (st == FL_OK && c->json) {
+        cli_json j;
+        cli_json_begin(&j, stdout);
+        cli_json_uint(&j, "balls", ap.star.count);
+        cli_json_uint(&j, "faces", ap.skin.triangle_count);
+        cli_json_int(&j, "euler", ap.euler);
+        cli_json_int(&j, "euler_input", ap.euler_input);
+        cli_json_double(&j, "epsilon", a->epsilon);
+        cli_json_double(&j, "hausdorff_upper", ap.hausdorff[1]);
+        cli_json_int(&j, "rounds", ap.rounds);
+        cli_json_double(&j, "cell", ap.cell);
+        cli_json_double(&j, "seconds", seconds);
+        cli_json_end(&j);
+    } else if (st == FL_OK && !c->quiet) {
+        printf("skin of %zu balls approximating %s: %zu faces, Euler characteristic %lld (input "
+               "%lld), certified Hausdorff <= %g <= epsilon %g (%.3f s)\n",
+               ap.star.count, a->mesh, ap.skin.triangle_count, ap.euler, ap.euler_input,
+               ap.hausdorff[1], a->epsilon, seconds);
+    }
+    fl_skin_approx_free(&ap);
+    fl_mesh_free(&mesh);
+    return st == FL_OK ? 0 : cli_report(&err);
+}
+
 int cmd_skin(int argc, char **argv)
 {
     cli_common c = {0};
     skin_args a = {0};
-    if (parse(argc, argv, &c, &a)) return 1;
+    int bad = parse(argc, argv, &c, &a);
+    if (bad) return bad;
     if (c.help) {
         fputs(usage_text, stdout);
         return 0;
     }
-    if (!a.balls) return cli_fail(1, "skin: needs --balls BALLS (see --help)");
+    if (a.mesh && a.balls) return cli_fail(1, "skin: give either --balls BALLS or MESH, not both");
+    if (a.mesh && !a.has_epsilon) return cli_fail(1, "skin: MESH needs --epsilon E (see --help)");
+    if (a.has_epsilon && !a.mesh) return cli_fail(1, "skin: --epsilon needs a MESH (see --help)");
+    if (a.mesh) return skin_of_mesh(&c, &a);
+    if (!a.balls) return cli_fail(1, "skin: needs --balls BALLS or MESH --epsilon E (see --help)");
     fl_error err;
     fl_balls balls = {0};
     fl_mesh mesh = {0};

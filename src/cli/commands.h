@@ -17,6 +17,7 @@ int cmd_hausdorff(int argc, char **argv);
 int cmd_render(int argc, char **argv);
 int cmd_smooth(int argc, char **argv);
 int cmd_skin(int argc, char **argv);
+int cmd_balls(int argc, char **argv);
 
 #include "flintstone.h"
 

@@ -28,6 +28,7 @@ static const cli_command commands[] = {
     {"smooth", "G1 cubic Bézier curve or surface through a polygon's or mesh's vertices",
      cmd_smooth},
     {"skin", "closed triangle mesh of the skin surface of a ball set", cmd_skin},
+    {"balls", "union of balls approximating a closed polyhedron within epsilon", cmd_balls},
     {"version", "print the version", cmd_version},
 };
 

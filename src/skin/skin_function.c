@@ -13,8 +13,13 @@
  * simplex whose z* lies in it gives the power distance of an actual member of conv(B), hence a
  * value >= G(x); the minimising simplex gives G(x). So the minimum over candidate simplices is
  * G(x) as soon as the candidates contain the minimising one, and extra candidates are harmless.
- * If G(x) < 0, the minimiser's centre z* has |x - z*|^2 < t w(z*) <= t wmax, which bounds
- * where the candidates must be searched. */
+ * If G(x) < 0, the minimiser's centre z* has |x - z*|^2 < t w(z*), and w(z*) is at most the
+ * largest weight of X's balls (on X the weight |z|^2 - L(z) is convex in z, L affine, so it
+ * peaks at a vertex). So only simplices with a positive ball can hold the minimiser of a
+ * negative G, and only within their own reach sqrt(t max w): the index lists each simplex
+ * near itself only, not within the reach of the largest ball of the set (which made every
+ * list hold most simplices when a few balls are large, as in the eps-approximation's B*). */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -67,7 +72,8 @@ static int invert_gram(int k, const double g[3][3], double inv[3][3])
 }
 
 /* Fills s for the balls idx[0..k] (k+1 balls). Returns -1 for affinely dependent centres. */
-static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simplex *s)
+static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, double t,
+                         skin_simplex *s)
 {
     const double *b0 = xyzw + 4 * (size_t)idx[0];
     memset(s, 0, sizeof *s);
@@ -101,6 +107,10 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_si
     for (int c = 0; c < 3; c++)
         fa2 += (s->f[c] - s->a[c]) * (s->f[c] - s->a[c]);
     s->w = fa2 - b0[3]; /* the orthogonal ball: |f - z_0|^2 - w_0 - w = 0 */
+    double wx = 0;
+    for (int i = 0; i <= k; i++)
+        wx = fmax(wx, xyzw[4 * (size_t)idx[i] + 3]);
+    s->reach = sqrt(t * wx);
     return 0;
 }
 
@@ -162,16 +172,41 @@ void fl_skin_function_free(fl_skin_function *skin)
 
 /* ---- candidate simplices ---- */
 
-static int add_simplex(fl_vec *v, const double *xyzw, const uint32_t *idx, int k)
+static void simplex_box(const skin_simplex *s, double lo[3], double hi[3]);
+
+/* How far around a simplex X its fallback index cells reach, in units of X's reach: the index
+ * then lists X wherever G < (margin^2 - 1) t max w_X could have X as the minimiser, so G is
+ * exact there, not only where it is negative; the mesher's root finding along grid edges
+ * (skin_mesh.c) needs values on the outside end of an edge to converge fast. */
+#define SKIN_REACH_MARGIN 1.5
+
+/* Adds the simplex of the balls idx[0..k] with its index box: the mixed cell's box
+ * (1-t) box(X) + t box(nu_X) when nu_lo/nu_hi bound its power face, cut to the reach box; the
+ * reach box alone when nu_lo is NULL. */
+static int add_simplex(fl_vec *v, const double *xyzw, const uint32_t *idx, int k, double t,
+                       const double *nu_lo, const double *nu_hi)
 {
     skin_simplex s;
-    if (simplex_setup(xyzw, idx, k, &s)) return 0; /* affinely dependent: never a minimiser */
+    if (simplex_setup(xyzw, idx, k, t, &s)) return 0; /* affinely dependent: never a minimiser */
+    double lo[3], hi[3], g = SKIN_REACH_MARGIN * s.reach;
+    simplex_box(&s, lo, hi);
+    s.box_exact = nu_lo != NULL;
+    for (int c = 0; c < 3; c++) {
+        s.lo[c] = lo[c] - g;
+        s.hi[c] = hi[c] + g;
+        if (!nu_lo) continue;
+        /* the mixed cell is (1-t) X + t nu_X; the slack covers the rounding of this sum */
+        double mlo = (1 - t) * lo[c] + t * nu_lo[c], mhi = (1 - t) * hi[c] + t * nu_hi[c];
+        double slack = 1e-12 * (fabs(mlo) + fabs(mhi));
+        s.lo[c] = fmax(s.lo[c], mlo - slack);
+        s.hi[c] = fmin(s.hi[c], mhi + slack);
+    }
     return fl_vec_push(v, &s, 1);
 }
 
 /* Few balls: every subset of at most 4 balls is a candidate (a superset of the regular
  * triangulation's simplices, so the minimum is still G; no triangulation, no degeneracy). */
-static int subsets(fl_vec *v, const double *xyzw, size_t n)
+static int subsets(fl_vec *v, const double *xyzw, size_t n, double t)
 {
     uint32_t idx[4];
     for (uint32_t mask = 1; mask < (1u << n); mask++) {
@@ -181,16 +216,23 @@ static int subsets(fl_vec *v, const double *xyzw, size_t n)
                 if (k < 4) idx[k] = i;
                 k++;
             }
-        if (k <= 4 && add_simplex(v, xyzw, idx, k - 1)) return -1;
+        if (k <= 4 && add_simplex(v, xyzw, idx, k - 1, t, NULL, NULL)) return -1;
     }
     return 0;
 }
 
+/* A simplex of the regular triangulation as a face of one tetrahedron (tet), or of a hull
+ * face (tet = UINT32_MAX: its power face nu_X is unbounded). */
+typedef struct rt_tuple {
+    uint32_t v[4]; /* sorted ball indices, UINT32_MAX padding */
+    uint32_t tet;
+} rt_tuple;
+
 static int cmp_tuple(const void *pa, const void *pb)
 {
-    const uint32_t *a = pa, *b = pb;
+    const rt_tuple *a = pa, *b = pb;
     for (int i = 0; i < 4; i++)
-        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+        if (a->v[i] != b->v[i]) return a->v[i] < b->v[i] ? -1 : 1;
     return 0;
 }
 
@@ -204,45 +246,135 @@ static void sort_small(uint32_t *a, int n)
         }
 }
 
-/* Every face of every tetrahedron of the regular triangulation, each once: 15 sub-tuples a
- * tetrahedron (padded with UINT32_MAX), sorted and deduplicated. */
-static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, fl_error *err)
+/* The Voronoi (power) vertex of tetrahedron t, the centre of the ball orthogonal to its four
+ * balls, into o[0..2], and in o[3] a bound on its rounding error per coordinate; o[3] = -1 when
+ * the tetrahedron is too flat for the bound to mean anything. With e_i = z_i - z_0 the centre
+ * solves 2 e_i.x = |e_i|^2 - w_i + w_0 (Cramer). Each computed determinant or numerator is off
+ * by at most a few ulps of the sum of its terms' absolute values (D for the denominator, M_k for
+ * numerator k), so |dx_k| <= 16 eps (M_k + |x_k| D) / |det| when |det| >> eps D. Symmetric
+ * inputs (the cube's protecting balls mirrored across an edge) give slivers whose four centres
+ * are coplanar up to the input's last bit: their vertex is decided by rounding noise, and
+ * their faces fall back to the reach box. */
+static void voronoi_vertex(const double *xyzw, const uint32_t *t, double o[4])
+{
+    const double *p[4];
+    for (int i = 0; i < 4; i++)
+        p[i] = xyzw + 4 * (size_t)t[i];
+    double e[3][3], r[3], ra[3];
+    for (int i = 0; i < 3; i++) {
+        for (int k = 0; k < 3; k++)
+            e[i][k] = p[i + 1][k] - p[0][k];
+        double l2 = e[i][0] * e[i][0] + e[i][1] * e[i][1] + e[i][2] * e[i][2];
+        r[i] = l2 - p[i + 1][3] + p[0][3];
+        ra[i] = l2 + fabs(p[i + 1][3]) + fabs(p[0][3]);
+    }
+    double c[3][3], ca[3][3]; /* cofactor vectors e1 x e2, e2 x e0, e0 x e1 and their bounds */
+    for (int j = 0; j < 3; j++) {
+        const double *u = e[(j + 1) % 3], *w = e[(j + 2) % 3];
+        for (int k = 0; k < 3; k++) {
+            int a = (k + 1) % 3, b = (k + 2) % 3;
+            c[j][k] = u[a] * w[b] - u[b] * w[a];
+            ca[j][k] = fabs(u[a] * w[b]) + fabs(u[b] * w[a]);
+        }
+    }
+    double det = 2 * (e[0][0] * c[0][0] + e[0][1] * c[0][1] + e[0][2] * c[0][2]);
+    double dabs = 2 * (fabs(e[0][0]) * ca[0][0] + fabs(e[0][1]) * ca[0][1] +
+                       fabs(e[0][2]) * ca[0][2]);
+    o[3] = -1;
+    if (!(fabs(det) > 1e-12 * dabs)) return;
+    double pad = 0;
+    for (int k = 0; k < 3; k++) {
+        double x = (r[0] * c[0][k] + r[1] * c[1][k] + r[2] * c[2][k]) / det;
+        double m = ra[0] * ca[0][k] + ra[1] * ca[1][k] + ra[2] * ca[2][k];
+        o[k] = p[0][k] + x;
+        pad = fmax(pad, 32 * DBL_EPSILON * (m + fabs(x) * dabs) / fabs(det) +
+                            4 * DBL_EPSILON * fabs(o[k]));
+    }
+    if (isfinite(o[0] + o[1] + o[2] + pad)) o[3] = pad;
+}
+
+/* The tuples of rt: the 15 faces of every tetrahedron and the 7 faces of every hull face. */
+static rt_tuple *rt_tuples(const fl_rt3 *rt, size_t *count)
+{
+    size_t n15 = rt->tet_count * 15, n7 = rt->hull_face_count * 7;
+    if (n15 / 15 != rt->tet_count || n15 + n7 < n15) return NULL;
+    rt_tuple *tup = fl_alloc_array(n15 + n7 + 1, sizeof(rt_tuple));
+    if (!tup) return NULL;
+    size_t m = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        size_t items = pass ? rt->hull_face_count : rt->tet_count;
+        int nv = pass ? 3 : 4;
+        const uint32_t *src = pass ? rt->hull_faces : rt->tet;
+        for (size_t q = 0; q < items; q++)
+            for (uint32_t mask = 1; mask < (1u << nv); mask++) {
+                rt_tuple *u = tup + m++;
+                int k = 0;
+                for (int i = 0; i < nv; i++)
+                    if (mask >> i & 1) u->v[k++] = src[(size_t)nv * q + (size_t)i];
+                sort_small(u->v, k);
+                for (int i = k; i < 4; i++)
+                    u->v[i] = UINT32_MAX;
+                u->tet = pass ? UINT32_MAX : (uint32_t)q;
+            }
+    }
+    *count = m;
+    return tup;
+}
+
+/* Every simplex of the regular triangulation once, with its mixed-cell box. The power face
+ * nu_X of X is the convex hull of the Voronoi vertices of the tetrahedra around X (unbounded
+ * when X lies on the hull), so its box is theirs. Edelsbrunner's mixed cells (1-t) X + t nu_X
+ * cover space, and on the mixed cell of X the skin function is X's quadric: with x = (1-t) a +
+ * t v, a in X and v in nu_X (v - f orthogonal to aff X), the parallel part of x - f is
+ * p = (1-t)(a - f), so z* = f + p/(1-t) = a lies in X. Listing X only near its mixed cell is
+ * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
+ * ball spans many simplices. */
+static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, double t,
+                              fl_error *err)
 {
     fl_rt3 rt;
     fl_status st = fl_rt3_build(xyzw, n, NULL, &rt, err);
     if (st == FL_ERR_ALGORITHM)
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: %s", err ? err->message : "");
     if (st) return st;
-    uint32_t *tup = fl_alloc_array(rt.tet_count * 15, 4 * sizeof(uint32_t));
-    if (!tup) {
+    size_t m = 0;
+    rt_tuple *tup = rt_tuples(&rt, &m);
+    double *vor = fl_alloc_array(rt.tet_count + 1, 4 * sizeof(double));
+    if (!tup || !vor) {
+        free(tup);
+        free(vor);
         fl_rt3_free(&rt);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     }
-    size_t m = 0;
-    for (size_t t = 0; t < rt.tet_count; t++) {
-        for (uint32_t mask = 1; mask < 16; mask++) {
-            uint32_t *u = tup + 4 * m++;
-            int k = 0;
-            for (int i = 0; i < 4; i++)
-                if (mask >> i & 1) u[k++] = rt.tet[4 * t + i];
-            sort_small(u, k);
-            for (int i = k; i < 4; i++)
-                u[i] = UINT32_MAX;
-        }
-    }
+    for (size_t i = 0; i < rt.tet_count; i++)
+        voronoi_vertex(xyzw, rt.tet + 4 * i, vor + 4 * i);
     fl_rt3_free(&rt);
-    qsort(tup, m, 4 * sizeof(uint32_t), cmp_tuple);
-    for (size_t i = 0; i < m; i++) {
-        if (i > 0 && !cmp_tuple(tup + 4 * i, tup + 4 * (i - 1))) continue;
+    qsort(tup, m, sizeof(rt_tuple), cmp_tuple);
+    for (size_t i = 0, j; i < m; i = j) {
+        double nlo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, nhi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+        int bounded = 1;
+        for (j = i; j < m && !cmp_tuple(tup + i, tup + j); j++) {
+            const double *o = tup[j].tet == UINT32_MAX ? NULL : vor + 4 * (size_t)tup[j].tet;
+            if (!o || !(o[3] >= 0)) {
+                bounded = 0;
+                continue;
+            }
+            for (int c = 0; c < 3; c++) {
+                nlo[c] = fmin(nlo[c], o[c] - o[3]);
+                nhi[c] = fmax(nhi[c], o[c] + o[3]);
+            }
+        }
         int k = 0;
-        while (k < 4 && tup[4 * i + k] != UINT32_MAX)
+        while (k < 4 && tup[i].v[k] != UINT32_MAX)
             k++;
-        if (add_simplex(v, xyzw, tup + 4 * i, k - 1)) {
+        if (add_simplex(v, xyzw, tup[i].v, k - 1, t, bounded ? nlo : NULL, nhi)) {
             free(tup);
+            free(vor);
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
         }
     }
     free(tup);
+    free(vor);
     return FL_OK;
 }
 
@@ -260,15 +392,13 @@ static void simplex_box(const skin_simplex *s, double lo[3], double hi[3])
         }
 }
 
-/* Cells of the index met by s's box grown by the reach: [c0, c1] per axis. */
+/* Cells of the index met by s's registration box: [c0, c1] per axis. */
 static void simplex_cells(const fl_skin_function *sk, const skin_simplex *s, size_t c0[3],
                           size_t c1[3])
 {
-    double lo[3], hi[3];
-    simplex_box(s, lo, hi);
     for (int c = 0; c < 3; c++) {
-        double u0 = floor((lo[c] - sk->reach - sk->origin[c]) / sk->cell);
-        double u1 = floor((hi[c] + sk->reach - sk->origin[c]) / sk->cell);
+        double u0 = floor((s->lo[c] - sk->origin[c]) / sk->cell);
+        double u1 = floor((s->hi[c] - sk->origin[c]) / sk->cell);
         c0[c] = u0 < 0 ? 0 : (size_t)u0;
         c1[c] = u1 >= (double)sk->dims[c] ? sk->dims[c] - 1 : (size_t)u1;
     }
@@ -349,22 +479,33 @@ static void cell_centre(const fl_skin_function *sk, size_t x, size_t y, size_t z
     c[2] = sk->origin[2] + ((double)z + 0.5) * sk->cell;
 }
 
+/* Whether the index lists s at all: simplices without a positive ball are never the minimiser
+ * of a negative G, and a mixed cell beyond the reach of its simplex only holds G >= 0. */
+static int listed(const skin_simplex *s)
+{
+    return s->reach > 0 && s->lo[0] <= s->hi[0] && s->lo[1] <= s->hi[1] && s->lo[2] <= s->hi[2];
+}
+
 /* Registers simplex i in every cell near it (pass 0 counts into cell_start[id + 1], pass 1
- * fills, pass 2 only counts); returns the number of cells. */
+ * fills; both return the number of cells) or, pass 2, returns the number of cells of its box. */
 static double register_simplex(fl_skin_function *sk, size_t i, int pass)
 {
     size_t c0[3], c1[3];
     const skin_simplex *s = &sk->simplex[i];
+    if (!listed(s)) return 0;
     simplex_cells(sk, s, c0, c1);
+    if (pass == 2) /* the budget estimate: the box's cells, an upper bound, without the tests */
+        return (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
+               (double)(c1[2] - c0[2] + 1);
     /* a cell holds a point within the reach iff its centre is within reach + half diagonal */
-    double d = (sk->reach + 0.8660254037844387 * sk->cell) * (1 + 1e-9);
+    double d = (SKIN_REACH_MARGIN * s->reach + 0.8660254037844387 * sk->cell) * (1 + 1e-9);
     double count = 0;
     for (size_t z = c0[2]; z <= c1[2]; z++)
         for (size_t y = c0[1]; y <= c1[1]; y++)
             for (size_t x = c0[0]; x <= c1[0]; x++) {
                 double c[3];
                 cell_centre(sk, x, y, z, c);
-                if (!may_be_near(s, c, d)) continue;
+                if (!s->box_exact && !may_be_near(s, c, d)) continue;
                 count++;
                 size_t id = (z * sk->dims[1] + y) * sk->dims[0] + x;
                 if (pass == 0)
@@ -375,41 +516,77 @@ static double register_simplex(fl_skin_function *sk, size_t i, int pass)
     return count;
 }
 
+static int cmp_double(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return a < b ? -1 : a > b;
+}
+
+/* The box of the registration boxes of the simplices with a positive ball, and the median of
+ * their longest sides (0 when there is none). */
+static fl_status index_box(const fl_skin_function *sk, double lo[3], double hi[3], double *median,
+                           fl_error *err)
+{
+    double *r = fl_alloc_array(sk->simplex_count + 1, sizeof(double));
+    if (!r) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    size_t m = 0;
+    for (int c = 0; c < 3; c++) {
+        lo[c] = HUGE_VAL;
+        hi[c] = -HUGE_VAL;
+    }
+    for (size_t i = 0; i < sk->simplex_count; i++) {
+        const skin_simplex *s = &sk->simplex[i];
+        if (!listed(s)) continue;
+        double side = 0;
+        for (int c = 0; c < 3; c++) {
+            lo[c] = fmin(lo[c], s->lo[c]);
+            hi[c] = fmax(hi[c], s->hi[c]);
+            side = fmax(side, s->hi[c] - s->lo[c]);
+        }
+        r[m++] = side;
+    }
+    qsort(r, m, sizeof(double), cmp_double);
+    *median = m ? r[m / 2] : 0;
+    free(r);
+    if (m == 0)
+        for (int c = 0; c < 3; c++)
+            lo[c] = hi[c] = 0;
+    return FL_OK;
+}
+
 /* Two passes over the simplices (count, then fill) into CSR arrays. */
 static fl_status build_index(fl_skin_function *sk, fl_error *err)
 {
-    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    for (size_t i = 0; i < sk->simplex_count; i++) {
-        double l[3], h[3];
-        simplex_box(&sk->simplex[i], l, h);
-        for (int c = 0; c < 3; c++) {
-            if (l[c] < lo[c]) lo[c] = l[c];
-            if (h[c] > hi[c]) hi[c] = h[c];
-        }
-    }
-    /* Registration covers the box grown by the reach, so any cell size is correct; cells of a
-     * half the reach keep the candidate lists short, capped at ~2^18 cells (registering a long
-     * simplex visits every cell of its box). Long simplices (across a hollow ball set, e.g. a ring)
-     * meet many cells: the cells grow until the registrations fit in max(2e7, 64 per simplex),
-     * trading memory for longer lists. */
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0}, median = 0;
+    fl_status st = index_box(sk, lo, hi, &median, err);
+    if (st) return st;
+    /* Registration covers each simplex's box, so any cell size is correct; cells of half the
+     * median box keep the candidate lists short, capped at ~2^18 cells
+     * (registering a long simplex visits every cell of its box). Long simplices (across a
+     * hollow ball set, e.g. a ring) meet many cells: the cells grow until the registrations fit
+     * in max(2e7, 64 per simplex), trading memory for longer lists. */
     double vol = 1;
     for (int c = 0; c < 3; c++) {
-        sk->origin[c] = lo[c] - sk->reach;
-        vol *= hi[c] - lo[c] + 2 * sk->reach;
+        sk->origin[c] = lo[c];
+        vol *= hi[c] - lo[c];
     }
     double budget = fmax(2e7, 64.0 * (double)sk->simplex_count);
     size_t cells = 1;
-    for (double cell = fmax(0.5 * sk->reach, cbrt(vol / 262144.0));; cell *= 1.5) {
+    if (!(median > 0)) { /* no ball of any simplex is positive: every list stays empty */
+        sk->cell = 1;
+        sk->dims[0] = sk->dims[1] = sk->dims[2] = 1;
+    }
+    for (double cell = fmax(1.0 * median, cbrt(vol / 262144.0)); median > 0; cell *= 1.5) {
         sk->cell = cell;
         /* A flat box (balls in a plane, one of them tiny: reach 7e-76) gave cells of 1e-26 and
          * 1e27 of them along an axis, beyond size_t (UBSan; found by fuzz/fuzz_skin.c): grow
          * the cells first until there are at most 2^20 (4 times the target above). */
         double many = 1;
-        for (int c = 0; c < 3; c++) many *= floor((hi[c] - lo[c] + 2 * sk->reach) / cell) + 1;
+        for (int c = 0; c < 3; c++) many *= floor((hi[c] - lo[c]) / cell) + 1;
         if (many > 1048576.0) continue;
         cells = 1;
         for (int c = 0; c < 3; c++) {
-            sk->dims[c] = (size_t)((hi[c] - lo[c] + 2 * sk->reach) / sk->cell) + 1;
+            sk->dims[c] = (size_t)((hi[c] - lo[c]) / sk->cell) + 1;
             cells *= sk->dims[c];
         }
         double total = 0;
@@ -457,14 +634,13 @@ fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_f
     if (!sk) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     sk->t = t;
     sk->wmax = wmax;
-    sk->reach = sqrt(t * wmax);
     fl_vec v;
     fl_vec_init(&v, sizeof(skin_simplex));
     fl_status st = FL_OK;
     if (n <= 8) {
-        if (subsets(&v, xyzw, n)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+        if (subsets(&v, xyzw, n, t)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     } else {
-        st = rt_simplices(&v, xyzw, n, err);
+        st = rt_simplices(&v, xyzw, n, t, err);
     }
     sk->simplex_count = v.count;
     sk->simplex = fl_vec_release(&v);

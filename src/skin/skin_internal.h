@@ -23,6 +23,16 @@ typedef struct skin_simplex {
     double mu_f[3];
     double f[3];
     double w;
+    /* sqrt(t * max weight of X's balls), 0 when no ball of X has a positive weight: the
+     * combination weight is at most that on X, so G(x) < 0 with X the minimiser puts x within
+     * this distance of X (skin_function.c) */
+    double reach;
+    /* Where the index lists X (skin_function.c, build_index): the box of X's mixed cell
+     * (1-t) X + t nu_X when box_exact, else X's box grown by SKIN_REACH_MARGIN times the reach
+     * (hull simplices, whose power face nu_X is unbounded, faces of slivers whose Voronoi
+     * vertex is not trustworthy, and the subsets of few balls) with a finer nearness test. */
+    double lo[3], hi[3];
+    int box_exact;
 } skin_simplex;
 
 struct fl_skin_function {
@@ -30,9 +40,9 @@ struct fl_skin_function {
     double wmax; /* largest ball weight (> 0) */
     size_t simplex_count;
     skin_simplex *simplex;
-    /* Uniform grid index: cell c lists the simplices whose bounding box grown by `reach` meets
-     * it (CSR arrays cell_start[cells+1], cell_item[]). */
-    double origin[3], cell, reach;
+    /* Uniform grid index: cell c lists the simplices X whose registration box (lo, hi) meets
+     * it (CSR arrays cell_start[cells+1], cell_item[]); simplices of reach 0 are in no list. */
+    double origin[3], cell;
     size_t dims[3];
     size_t *cell_start;
     uint32_t *cell_item;

@@ -149,6 +149,65 @@ static void test_skin_function_matches_definition(void)
     fl_skin_function_free(g);
 }
 
+/* Balls of very different sizes, as in the eps-approximation's B* (a large inner ball among
+ * small surface balls and negative ones): the index lists each simplex only near its mixed
+ * cell or within its own reach, not within the largest ball's reach, so this checks that no
+ * minimiser is missed where it matters. Queries near the skin (where the sign decides the
+ * mesh) and anywhere in the box, against the oracle. */
+static void test_skin_function_mixed_sizes_matches_definition(void)
+{
+    enum { N = 12 };
+    double b[4 * N];
+    b[0] = b[1] = b[2] = 0;
+    b[3] = 1.5 * 1.5;
+    for (int i = 1; i < N; i++) {
+        double u[3], len = 0;
+        for (int c = 0; c < 3; c++) {
+            u[c] = rnd() - 0.5;
+            len += u[c] * u[c];
+        }
+        len = sqrt(len);
+        double rad = 1.5 + 0.4 * rnd();
+        for (int c = 0; c < 3; c++)
+            b[4 * i + c] = rad * u[c] / len;
+        b[4 * i + 3] = i % 6 == 0 ? -0.02 : pow(0.15 + 0.3 * rnd(), 2);
+    }
+    double t = 0.5;
+    fl_skin_function *g = NULL;
+    fl_error err;
+    CHECK_STATUS(fl_skin_function_new(b, N, t, &g, &err), FL_OK, &err);
+    if (!g) return;
+    int negatives = 0, near = 0;
+    for (int q = 0; q < 400; q++) {
+        double x[3];
+        if (q % 2) { /* near the big ball's skin sphere (radius sqrt(t) 1.5) or beyond it */
+            double u[3], len = 0;
+            for (int c = 0; c < 3; c++) {
+                u[c] = rnd() - 0.5;
+                len += u[c] * u[c];
+            }
+            double rad = sqrt(t) * 1.5 * (0.8 + 0.6 * rnd());
+            for (int c = 0; c < 3; c++)
+                x[c] = rad * u[c] / sqrt(len);
+        } else {
+            for (int c = 0; c < 3; c++)
+                x[c] = 5 * rnd() - 2.5;
+        }
+        double got = fl_skin_function_value(g, x);
+        double want = (double)skin_oracle_value(b, N, t, x);
+        near += fabs(want) < 0.1;
+        if (want <= 0 || got <= 0) {
+            negatives += want < 0;
+            CHECK_MSG(fabs(got - want) <= 1e-9 * 16, "G(%g,%g,%g) = %.17g, oracle %.17g", x[0],
+                      x[1], x[2], got, want);
+        } else {
+            CHECK_MSG(got >= want * (1 - 1e-12), "positive G below the oracle: %g < %g", got, want);
+        }
+    }
+    CHECK_MSG(negatives > 60 && near > 10, "%d negative, %d near the skin", negatives, near);
+    fl_skin_function_free(g);
+}
+
 /* Random ball sets: topology from the alpha complex (independent), vertices from the oracle. */
 static void test_random_balls_euler_matches_union(void)
 {
@@ -205,6 +264,7 @@ int main(void)
         FL_TEST_CASE(test_two_separate_balls_give_two_spheres),
         FL_TEST_CASE(test_ring_of_balls_is_a_torus),
         FL_TEST_CASE(test_skin_function_matches_definition),
+        FL_TEST_CASE(test_skin_function_mixed_sizes_matches_definition),
         FL_TEST_CASE(test_random_balls_euler_matches_union),
         FL_TEST_CASE(test_bad_input_is_rejected),
     };

@@ -1,0 +1,208 @@
+/* B_perp (Cheng & Tan §5) and B* (§6.2) from the regular triangulation of the surface balls.
+ *
+ * B_perp: for every tetrahedron X of the regular triangulation of B, the ball b_X orthogonal to
+ * its four balls (centre = the power/Voronoi vertex dual to X) when the centre lies inside the
+ * object and the weight is positive (§5 steps 2-4).
+ * B*: B_perp plus the orthogonal ball b_X^perp = (z_X^perp, w_X^perp) of every vertex, edge and
+ * triangle X whose focus z_X^perp (the point of aff(z_X) with equal power to its balls) lies in
+ * its dual power face nu_X with negative power, i.e. the alpha simplices of B with
+ * aff(z_X) ∩ nu_X non-empty. The paper also asks conv(z_X) ⊆ O; we keep every such simplex:
+ * an extra negative ball cannot move the skin outside ∪B_perp (body^t(B*) ⊆ body^1(B*) =
+ * ∪B_perp, §6.1) nor into the interior of ∪B (the proof of Lemma 17 uses only orthogonality,
+ * which focus ∈ nu_X gives). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/core.h"
+#include "skin/skin_eps.h"
+
+typedef struct face_entry {
+    uint32_t v[3]; /* sorted ball indices, UINT32_MAX padding for vertices and edges */
+    uint32_t pass; /* the focus had power <= every other ball of this tetrahedron */
+} face_entry;
+
+static int cmp_face(const void *pa, const void *pb)
+{
+    const face_entry *a = pa, *b = pb;
+    for (int i = 0; i < 3; i++)
+        if (a->v[i] != b->v[i]) return a->v[i] < b->v[i] ? -1 : 1;
+    return 0;
+}
+
+static int cmp_ball(const void *pa, const void *pb)
+{
+    const double *a = pa, *b = pb;
+    for (int i = 0; i < 4; i++)
+        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+    return 0;
+}
+
+static double power(const double *ball, const double x[3])
+{
+    double d0 = x[0] - ball[0], d1 = x[1] - ball[1], d2 = x[2] - ball[2];
+    return d0 * d0 + d1 * d1 + d2 * d2 - ball[3];
+}
+
+/* The focus of the balls s[0..k] (k <= 2) and its power; 0 when aff(z_X) is degenerate. The
+ * focus satisfies 2 (z_j - z_0).(f - z_0) = |z_j - z_0|^2 - w_j + w_0 (equal power). */
+static int focus(const double *const *s, int k, double f[3], double *pw)
+{
+    double a[2][3], r[2], g[2][2], mu[2] = {0, 0};
+    for (int j = 0; j < k; j++) {
+        for (int i = 0; i < 3; i++) a[j][i] = s[j + 1][i] - s[0][i];
+        r[j] = 0.5 * (a[j][0] * a[j][0] + a[j][1] * a[j][1] + a[j][2] * a[j][2] - s[j + 1][3] +
+                      s[0][3]);
+    }
+    for (int j = 0; j < k; j++)
+        for (int l = 0; l < k; l++)
+            g[j][l] = a[j][0] * a[l][0] + a[j][1] * a[l][1] + a[j][2] * a[l][2];
+    if (k == 1) {
+        if (!(g[0][0] > 0)) return 0;
+        mu[0] = r[0] / g[0][0];
+    } else if (k == 2) {
+        double det = g[0][0] * g[1][1] - g[0][1] * g[1][0];
+        if (!(fabs(det) > 1e-14 * g[0][0] * g[1][1])) return 0;
+        mu[0] = (r[0] * g[1][1] - r[1] * g[0][1]) / det;
+        mu[1] = (g[0][0] * r[1] - g[1][0] * r[0]) / det;
+    }
+    for (int i = 0; i < 3; i++) {
+        f[i] = s[0][i];
+        for (int j = 0; j < k; j++) f[i] += mu[j] * a[j][i];
+    }
+    *pw = power(s[0], f);
+    return 1;
+}
+
+/* The 14 proper faces of tetrahedron t (4 vertices, 6 edges, 4 triangles), each with whether
+ * its focus has power <= that of the tetrahedron's remaining balls (focus ∈ nu_X is decided
+ * by the balls of the simplices around X, i.e. by every incident tetrahedron passing). */
+static void tet_faces(const double *xyzw, const uint32_t *t, double tol, face_entry *out)
+{
+    static const int sub[14][3] = {{0, -1, -1}, {1, -1, -1}, {2, -1, -1}, {3, -1, -1},
+                                   {0, 1, -1},  {0, 2, -1},  {0, 3, -1},  {1, 2, -1},
+                                   {1, 3, -1},  {2, 3, -1},  {0, 1, 2},   {0, 1, 3},
+                                   {0, 2, 3},   {1, 2, 3}};
+    for (int q = 0; q < 14; q++) {
+        uint32_t v[3] = {UINT32_MAX, UINT32_MAX, UINT32_MAX};
+        const double *s[3];
+        int k = 0, in[4] = {0, 0, 0, 0};
+        for (int j = 0; j < 3 && sub[q][j] >= 0; j++, k++) {
+            v[k] = t[sub[q][j]];
+            in[sub[q][j]] = 1;
+        }
+        for (int a = 0; a < k; a++) /* sort the (at most 3) indices */
+            for (int b = a + 1; b < k; b++)
+                if (v[b] < v[a]) {
+                    uint32_t x = v[a];
+                    v[a] = v[b];
+                    v[b] = x;
+                }
+        for (int j = 0; j < k; j++) s[j] = xyzw + 4 * (size_t)v[j];
+        double f[3], pw = 0;
+        int pass = focus(s, k - 1, f, &pw);
+        for (int c = 0; c < 4 && pass; c++)
+            if (!in[c] && power(xyzw + 4 * (size_t)t[c], f) < pw - tol) pass = 0;
+        pass = pass && pw < 0;
+        memcpy(out[q].v, v, sizeof v);
+        out[q].pass = (uint32_t)pass;
+    }
+}
+
+static fl_status star_faces(const fl_balls *b, const fl_rt3 *rt, double tol, fl_vec *star,
+                            fl_error *err)
+{
+    face_entry *e = fl_alloc_array(rt->tet_count, 14 * sizeof(face_entry));
+    if (!e) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory (B*)");
+    for (size_t i = 0; i < rt->tet_count; i++) tet_faces(b->xyzw, rt->tet + 4 * i, tol, e + 14 * i);
+    size_t n = 14 * rt->tet_count;
+    qsort(e, n, sizeof *e, cmp_face);
+    for (size_t i = 0; i < n;) {
+        size_t j = i;
+        uint32_t all = 1;
+        for (; j < n && !cmp_face(e + i, e + j); j++) all &= e[j].pass;
+        if (all) {
+            const double *s[3];
+            int k = 0;
+            while (k < 3 && e[i].v[k] != UINT32_MAX) {
+                s[k] = b->xyzw + 4 * (size_t)e[i].v[k];
+                k++;
+            }
+            double ball[4];
+            if (focus(s, k - 1, ball, &ball[3]) && fl_vec_push(star, ball, 1)) {
+                free(e);
+                return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory (B*)");
+            }
+        }
+        i = j;
+    }
+    free(e);
+    return FL_OK;
+}
+
+/* 1 when the floating-point orthogonal ball o of tetrahedron t is orthogonal to its four balls
+ * up to rounding. Symmetric inputs (a cube's protecting balls mirrored across an edge) give
+ * slivers whose four centres are coplanar and co-orthogonal up to the last bit of the input:
+ * their orthocentre is then decided by rounding noise, and fl_rt3's Cramer solve returned balls
+ * of radius 0.9 in the unit cube that are not even orthogonal to their own balls (residual
+ * 0.04) and contain other ball centres, against Theorem 4 (docs/skin.md). In exact arithmetic
+ * such a degenerate sliver's ball lies on the Voronoi edge dual to the four co-circular balls,
+ * and the power to a point along that edge is linear in the position, so the ball is covered
+ * by the balls of the edge's two ends: dropping it loses nothing the verification would not
+ * catch anyway. */
+static int orthogonal_to_tet(const double *xyzw, const uint32_t *t, const double *o)
+{
+    for (int i = 0; i < 4; i++) {
+        const double *z = xyzw + 4 * (size_t)t[i];
+        double d2 = (o[0] - z[0]) * (o[0] - z[0]) + (o[1] - z[1]) * (o[1] - z[1]) +
+                    (o[2] - z[2]) * (o[2] - z[2]);
+        double res = d2 - z[3] - o[3], mag = d2 + fabs(z[3]) + fabs(o[3]);
+        if (!(fabs(res) <= 1e-9 * mag)) return 0;
+    }
+    return 1;
+}
+
+fl_status skin_eps_orthogonal_balls(skin_eps_grid *g, const fl_balls *b, fl_balls *perp,
+                                    fl_balls *star, fl_error *err)
+{
+    fl_rt3 rt = {0};
+    fl_rt3_options ro = {0};
+    ro.want_ortho = 1;
+    fl_status st = fl_rt3_build(b->xyzw, b->count, &ro, &rt, err);
+    if (st != FL_OK) return st;
+    fl_vec vp, vs;
+    fl_vec_init(&vp, 4 * sizeof(double));
+    fl_vec_init(&vs, 4 * sizeof(double));
+    double scale = 0;
+    for (size_t i = 0; i < b->count; i++) scale = fmax(scale, b->xyzw[4 * i + 3]);
+    for (size_t i = 0; i < rt.tet_count && st == FL_OK; i++) {
+        const double *o = rt.ortho + 4 * i;
+        if (!(o[3] > 0) || !isfinite(o[0] + o[1] + o[2] + o[3])) continue;
+        if (!orthogonal_to_tet(b->xyzw, rt.tet + 4 * i, o)) continue;
+        if (skin_eps_inside(g, o) && fl_vec_push(&vp, o, 1))
+            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory (B_perp)");
+    }
+    /* cospherical balls (the cube's symmetric ones) give one Voronoi vertex several times */
+    if (st == FL_OK && vp.count > 1) {
+        double *d = vp.data;
+        qsort(d, vp.count, 4 * sizeof(double), cmp_ball);
+        size_t u = 1;
+        for (size_t i = 1; i < vp.count; i++)
+            if (cmp_ball(d + 4 * i, d + 4 * (u - 1))) memmove(d + 4 * u++, d + 4 * i, 4 * sizeof(double));
+        vp.count = u;
+    }
+    if (st == FL_OK && fl_vec_push(&vs, vp.data, vp.count))
+        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory (B*)");
+    if (st == FL_OK) st = star_faces(b, &rt, 1e-9 * scale, &vs, err);
+    fl_rt3_free(&rt);
+    if (st != FL_OK) {
+        fl_vec_free(&vp);
+        fl_vec_free(&vs);
+        return st;
+    }
+    perp->count = vp.count;
+    perp->xyzw = fl_vec_release(&vp);
+    star->count = vs.count;
+    star->xyzw = fl_vec_release(&vs);
+    return FL_OK;
+}

@@ -1448,11 +1448,17 @@ typedef enum fl_g1_scheme {
                             * smooth meshes, not on every coarse one: measure it with
                             * fl_g1_surface_measure (docs/smooth.md has the numbers) */
     FL_G1_MACRO = 1,       /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
-    FL_G1_SIX_SPLIT = 2    /* §9.8: six cubic micro patches a triangle (split at the edge
+    FL_G1_SIX_SPLIT = 2,   /* §9.8: six cubic micro patches a triangle (split at the edge
                             * midpoints and the centre), C1 inside each macro triangle, G1
                             * across macro edges by the least-displacement solve of step 5
                             * where that system has a solution: not on some mirror-symmetric
                             * edges (singular_edges; docs/smooth.md has where and why) */
+    FL_G1_TWO_SPLIT = 3    /* §9.7: pairs of thin triangles (docs/smooth.md: the three-split
+                            * would make a thinner micro triangle) split in two at the midpoint
+                            * of their common edge, four micro patches G1 among themselves by
+                            * the least-displacement solve of eq. 9.6; every other triangle
+                            * three-split, its inner point on an edge shared with a pair from
+                            * eq. 9.7. EXPERIMENTAL: see docs/smooth.md for where it is G1 */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */
@@ -1490,6 +1496,7 @@ typedef struct fl_g1_surface {
     size_t quadratic_edges;     /* macro edges whose boundary curve was made a degree-raised
                                  * quadratic because eq. 9.4 was (nearly) dependent with the
                                  * thesis's cubic curve (docs/smooth.md) */
+    size_t two_split_pairs;     /* two-split: pairs of macro triangles split in two */
 } fl_g1_surface;
 
 /* Builds the surface over a closed, manifold, oriented mesh with coordinates |x| <= 1e150

@@ -1458,7 +1458,10 @@ typedef enum fl_g1_scheme {
                             * of their common edge, four micro patches G1 among themselves by
                             * the least-displacement solve of eq. 9.6; every other triangle
                             * three-split, its inner point on an edge shared with a pair from
-                            * eq. 9.7. EXPERIMENTAL: see docs/smooth.md for where it is G1 */
+                            * eq. 9.7. As printed this is NOT G1: eq. 9.6 forces a degenerate
+                            * corner at every split point and eq. 9.7 leaves the far end of the
+                            * outer edges open (docs/smooth.md derives and measures both); kept
+                            * for comparison, not for use */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */
@@ -1474,8 +1477,10 @@ typedef struct fl_g1_surface_options {
  * i, corner 1 by j, corner 2 by k); its corners are the nodes corner[3p..3p+2],
  * counter-clockwise seen from outside. Node n < vertex_count is mesh vertex n; node
  * vertex_count + t is the split point (centre) of macro triangle t; with the six-split, node
- * vertex_count + triangle_count + e is the midpoint of macro edge e. macro[p] is the mesh triangle the
- * patch belongs to. Patches sharing an edge share its two end nodes. */
+ * vertex_count + triangle_count + e is the midpoint of macro edge e; with the two-split, the
+ * four patches of pair k come first (4k .. 4k+3) and their split point is node vertex_count +
+ * the smaller triangle index of the pair. macro[p] is the mesh triangle the patch belongs to.
+ * Patches sharing an edge share its two end nodes. */
 typedef struct fl_g1_surface {
     size_t patch_count;
     double *ctrl;
@@ -1492,7 +1497,8 @@ typedef struct fl_g1_surface {
     size_t singular_edges;      /* three-split: macro edges where eq. 9.4 was dependent and
                                  * the minimal displacement solution was taken; six-split:
                                  * macro edges whose step-5 system was singular (their G1
-                                 * conditions may not hold) */
+                                 * conditions may not hold); two-split: plus the pairs whose
+                                 * eq. 9.6 system was rank-deficient */
     size_t quadratic_edges;     /* macro edges whose boundary curve was made a degree-raised
                                  * quadratic because eq. 9.4 was (nearly) dependent with the
                                  * thesis's cubic curve (docs/smooth.md) */

@@ -242,6 +242,25 @@ static void test_two_split_tessellation_is_watertight(void)
     }
 }
 
+/* Smallest angle of the triangles spanned by the patch corners (the micro triangles §9.7 wants
+ * less thin). */
+static double min_corner_angle(const fl_g1_surface *s)
+{
+    double worst = 180;
+    for (size_t p = 0; p < s->patch_count; p++) {
+        const double *c = s->ctrl + 30 * p, *q[3] = {c, c + 18, c + 27};
+        for (int r = 0; r < 3; r++) {
+            double u[3], v[3];
+            for (int d = 0; d < 3; d++) {
+                u[d] = q[(r + 1) % 3][d] - q[r][d];
+                v[d] = q[(r + 2) % 3][d] - q[r][d];
+            }
+            worst = fmin(worst, g1_angle_deg(u, v));
+        }
+    }
+    return worst;
+}
+
 /* The numbers of docs/smooth.md: jumps by edge kind and deviation, two- vs three-split. */
 static void test_two_split_report(void)
 {
@@ -260,8 +279,9 @@ static void test_two_split_report(void)
                 "%.4g | three: jump %.3g flips %zu dev %.4g\n",
                 i, m.triangle_count, s.two_split_pairs, s.patch_count, jump, flips, unpaired,
                 ms.max_deviation, j3, f3, mt.max_deviation);
-        fprintf(stderr, "   spokes %.3g outer %.3g other %.3g\n", jump_of_kind(&s, 0, 32),
-                jump_of_kind(&s, 1, 32), jump_of_kind(&s, 2, 32));
+        fprintf(stderr, "   spokes %.3g outer %.3g other %.3g | min corner angle two %.3g three %.3g\n",
+                jump_of_kind(&s, 0, 32), jump_of_kind(&s, 1, 32), jump_of_kind(&s, 2, 32),
+                min_corner_angle(&s), min_corner_angle(&t));
         fl_g1_surface_free(&s);
         fl_g1_surface_free(&t);
         fl_mesh_free(&m);

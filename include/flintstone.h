@@ -1453,15 +1453,17 @@ typedef enum fl_g1_scheme {
                             * across macro edges by the least-displacement solve of step 5
                             * where that system has a solution: not on some mirror-symmetric
                             * edges (singular_edges; docs/smooth.md has where and why) */
-    FL_G1_TWO_SPLIT = 3    /* §9.7: pairs of thin triangles (docs/smooth.md: the three-split
-                            * would make a thinner micro triangle) split in two at the midpoint
-                            * of their common edge, four micro patches G1 among themselves by
-                            * the least-displacement solve of eq. 9.6; every other triangle
-                            * three-split, its inner point on an edge shared with a pair from
-                            * eq. 9.7. As printed this is NOT G1: eq. 9.6 forces a degenerate
-                            * corner at every split point and eq. 9.7 leaves the far end of the
-                            * outer edges open (docs/smooth.md derives and measures both); kept
-                            * for comparison, not for use */
+    FL_G1_TWO_SPLIT = 3,   /* §9.7: pairs of thin triangles (docs/smooth.md: the three-split
+                            * would make a micro angle < 15 degrees) split in two at their
+                            * common edge, every other triangle three-split. Each pair is one
+                            * C1 cross split of its quad (four cubic micro patches), its inner
+                            * points solved with the neighbours' by eq. 9.4 as on a three-split
+                            * edge: G1 where the three-split is (docs/smooth.md) */
+    FL_G1_TWO_SPLIT_AS_PRINTED = 4 /* §9.7 exactly as printed (split at P(1/2,1/2,0), eq. 9.6
+                            * least-displacement solve, eq. 9.7 on the neighbours' edges): NOT
+                            * G1, eq. 9.6 forces a degenerate corner at every split point and
+                            * eq. 9.7 leaves the far end of the outer edges open (docs/smooth.md
+                            * derives and measures both); kept for comparison, not for use */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */

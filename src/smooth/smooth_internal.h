@@ -110,6 +110,21 @@ fl_status g1_two_split(const fl_mesh *m, const double *normals, const uint32_t *
                        macro_net *nets, fl_g1_surface *s, uint32_t *paired, size_t *patches,
                        fl_error *err);
 
+/* Pairs of thin triangles (two_split.c): pair_edge[t] = the half-edge of t shared with its
+ * partner, UINT32_MAX for a three-split triangle. No two pairs are adjacent. */
+fl_status g1_choose_pairs(const fl_mesh *m, const uint32_t *opp, uint32_t *pair_edge,
+                          fl_error *err);
+
+/* The G1 two-split (cross split): sets the w of both triangles of every pair to the C1 spoke
+ * points of the quad, before the outer edges are solved by eq. 9.4. */
+void g1_pair_spoke_points(const uint32_t *opp, const uint32_t *pair_edge, size_t nt,
+                          macro_net *nets);
+
+/* Writes the four patches of the pair split across half-edge h from patch p on (their inner
+ * points x solved on the outer edges); returns the next free patch index. */
+size_t g1_emit_cross_split(const fl_mesh *m, const uint32_t *opp, uint32_t h,
+                           const macro_net *nets, fl_g1_surface *s, size_t p);
+
 /* The six-split of §9.8 (six_split.c) over a checked mesh with final vertex normals: fills
  * every patch of s (allocated for 6 patches a triangle) and s->singular_edges. */
 fl_status g1_six_split(const fl_mesh *m, const double *normals, double tension, fl_g1_surface *s,

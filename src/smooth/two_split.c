@@ -97,8 +97,8 @@ static void outer_half_edges(const uint32_t *opp, uint32_t h, uint32_t out[4])
 }
 
 /* Greedy pairing (thinnest first); pair_edge[t] = the half-edge of t split, or UINT32_MAX. */
-static fl_status choose_pairs(const fl_mesh *m, const uint32_t *opp, uint32_t *pair_edge,
-                              fl_error *err)
+fl_status g1_choose_pairs(const fl_mesh *m, const uint32_t *opp, uint32_t *pair_edge,
+                          fl_error *err)
 {
     size_t nt = m->triangle_count, nc = 0;
     candidate *c = fl_alloc_array(nt, sizeof *c);
@@ -342,7 +342,7 @@ fl_status g1_two_split(const fl_mesh *m, const double *normals, const uint32_t *
     size_t nt = m->triangle_count;
     *patches = 0;
     s->two_split_pairs = 0;
-    fl_status st = choose_pairs(m, opp, paired, err);
+    fl_status st = g1_choose_pairs(m, opp, paired, err);
     if (st) return st;
     for (size_t t = 0; t < nt; t++) {
         uint32_t h = paired[t];
@@ -370,4 +370,79 @@ fl_status g1_two_split(const fl_mesh *m, const double *normals, const uint32_t *
     for (size_t t = 0; t < nt; t++)
         if (paired[t] != UINT32_MAX) paired[t] = opp[paired[t]] / 3;
     return FL_OK;
+}
+
+/* ---- The G1 variant: each pair as one C1 cross split (docs/smooth.md) ----
+ *
+ * The pair's quad B, C, A, D is taken over the square domain b = (1, 0), c = (0, 1),
+ * a = (-1, 0), d = (0, -1) with S at the origin, where its diagonals cross (the Fraeijs de
+ * Veubeke-Sander / Sibson split). On every spoke the domain gives s - v_i = (v_i-1 - v_i)/2 +
+ * (v_i+1 - v_i)/2, so the four micro patches are C1 over the square exactly when, row by row,
+ *   W_i = (E_i-1,1 + E_i,0) / 2,   Y_i = (X_i-1 + X_i) / 2,   Z = (Y_i-1 + Y_i+1) / 2,
+ * and the last is consistent for every i: Z = (X_0 + X_1 + X_2 + X_3) / 4. The four X_i stay
+ * free; they are the pair's inner points on its four outer edges and are solved there by
+ * eq. 9.4 together with the three-split neighbours' R1, exactly as on a three-split edge. The
+ * Y_i - Z lie on the two domain diagonals' images, so the corner at S is regular. */
+
+void g1_pair_spoke_points(const uint32_t *opp, const uint32_t *pair_edge, size_t nt,
+                          macro_net *nets)
+{
+    for (size_t t = 0; t < nt; t++) {
+        uint32_t h = pair_edge[t];
+        if (h == UINT32_MAX || opp[h] < h) continue;
+        uint32_t q = opp[h];
+        int k = (int)(h % 3), j = (int)(q % 3), k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+        macro_net *P = nets + t, *Q = nets + q / 3;
+        for (int d = 0; d < 3; d++) {
+            double wb = (P->e[k1][0][d] + Q->e[j2][1][d]) / 2; /* B: edges B->C, D->B */
+            double wc = (P->e[k2][0][d] + P->e[k1][1][d]) / 2; /* C: edges C->A, B->C */
+            double wa = (P->e[k2][1][d] + Q->e[j1][0][d]) / 2; /* A: edges C->A, A->D */
+            double wd = (Q->e[j2][0][d] + Q->e[j1][1][d]) / 2; /* D: edges D->B, A->D */
+            P->w[k1][d] = Q->w[j][d] = wb;
+            P->w[k][d] = Q->w[j1][d] = wa;
+            P->w[k2][d] = wc;
+            Q->w[j2][d] = wd;
+        }
+    }
+}
+
+size_t g1_emit_cross_split(const fl_mesh *m, const uint32_t *opp, uint32_t h,
+                           const macro_net *nets, fl_g1_surface *s, size_t p)
+{
+    uint32_t q = opp[h], P = h / 3, Q = q / 3;
+    int k = (int)(h % 3), j = (int)(q % 3);
+    const macro_net *nP = nets + P, *nQ = nets + Q;
+    const uint32_t v[4] = {m->tri[3 * P + (size_t)(k + 1) % 3], m->tri[3 * P + (size_t)(k + 2) % 3],
+                           m->tri[h], m->tri[3 * Q + (size_t)(j + 2) % 3]};
+    const macro_net *own[4] = {nP, nP, nQ, nQ};
+    const int edge[4] = {(k + 1) % 3, (k + 2) % 3, (j + 1) % 3, (j + 2) % 3};
+    double y[4][3], z[3] = {0, 0, 0};
+    for (int i = 0; i < 4; i++)
+        for (int d = 0; d < 3; d++) {
+            const double *x0 = own[(i + 3) % 4]->x[edge[(i + 3) % 4]], *x1 = own[i]->x[edge[i]];
+            y[i][d] = (x0[d] + x1[d]) / 2;
+            z[d] += x1[d] / 4;
+        }
+    uint32_t node = (uint32_t)(m->vertex_count + (P < Q ? P : Q));
+    for (int i = 0; i < 4; i++, p++) {
+        int i1 = (i + 1) % 4;
+        double(*c)[3] = (double(*)[3])(s->ctrl + 30 * p);
+        const macro_net *o = own[i], *o1 = own[i1];
+        memcpy(c[g1_ix(3, 0)], m->xyz + 3 * v[i], sizeof c[0]);
+        memcpy(c[g1_ix(0, 3)], m->xyz + 3 * v[i1], sizeof c[0]);
+        memcpy(c[g1_ix(2, 1)], o->e[edge[i]][0], sizeof c[0]);
+        memcpy(c[g1_ix(1, 2)], o->e[edge[i]][1], sizeof c[0]);
+        memcpy(c[g1_ix(2, 0)], o->w[edge[i]], sizeof c[0]);            /* W at V_i */
+        memcpy(c[g1_ix(0, 2)], o1->w[edge[i1]], sizeof c[0]);          /* W at V_i+1 */
+        memcpy(c[g1_ix(1, 1)], o->x[edge[i]], sizeof c[0]);
+        memcpy(c[g1_ix(1, 0)], y[i], sizeof c[0]);
+        memcpy(c[g1_ix(0, 1)], y[i1], sizeof c[0]);
+        memcpy(c[g1_ix(0, 0)], z, sizeof c[0]);
+        s->corner[3 * p] = v[i];
+        s->corner[3 * p + 1] = v[i1];
+        s->corner[3 * p + 2] = node;
+        s->macro[p] = i < 2 ? P : Q;
+    }
+    return p;
 }

@@ -83,9 +83,9 @@ static double jump_of_kind(const fl_g1_surface *s, int kind, int samples)
 /* Every patch corner at a mesh vertex is the vertex, with the surface's vertex normal. */
 static void test_two_split_interpolates_vertices_and_normals_to_1e12(void)
 {
-    for (int i = 0; i < MESHES; i++) {
-        fl_mesh m = test_mesh(i);
-        fl_g1_surface s = build(&m, FL_G1_TWO_SPLIT);
+    for (int i = 0; i < 2 * MESHES; i++) {
+        fl_mesh m = test_mesh(i / 2);
+        fl_g1_surface s = build(&m, i % 2 ? FL_G1_TWO_SPLIT_AS_PRINTED : FL_G1_TWO_SPLIT);
         CHECK_MSG(s.two_split_pairs > 0, "mesh %d has no thin pair", i);
         CHECK_EQ_INT(s.patch_count, 3 * m.triangle_count - 2 * s.two_split_pairs);
         double verr = 0, nerr = 0;
@@ -148,20 +148,75 @@ static void test_two_split_pairs_are_thin_and_isolated(void)
     }
 }
 
-/* The three-split triangles not next to a pair are untouched: G1 to < 1e-7° there. */
-static void test_two_split_leaves_the_rest_g1(void)
+/* The two-split (cross split) is G1 on every micro and macro edge: the normals of the two
+ * patches agree to < 1e-7 degrees at 33 points of every patch edge, the patches lie on
+ * opposite sides, every edge has its partner; the library's measure agrees. As printed
+ * (FL_G1_TWO_SPLIT_AS_PRINTED) the edges away from the pairs stay G1 too. */
+static void test_two_split_is_g1_on_every_micro_and_macro_edge(void)
 {
     for (int i = 0; i < MESHES; i++) {
         fl_mesh m = test_mesh(i);
         fl_g1_surface s = build(&m, FL_G1_TWO_SPLIT);
-        double j = jump_of_kind(&s, 2, 32);
+        size_t flips, unpaired;
+        double jump = g1_max_edge_jump(&s, 32, &flips, &unpaired);
+        CHECK_MSG(jump < 1e-7, "mesh %d: normal jump %g degrees", i, jump);
+        CHECK_EQ_INT(flips, 0);
+        CHECK_EQ_INT(unpaired, 0);
+        fl_g1_metrics mt;
+        fl_error err;
+        CHECK_STATUS(fl_g1_surface_measure(&s, &m, 4, &mt, &err), FL_OK, &err);
+        CHECK(mt.max_edge_normal_jump_deg < 1e-7 && mt.orientation_flips == 0);
+        fl_g1_surface_free(&s);
+        if (i == 4) {
+            fl_mesh_free(&m);
+            continue; /* time */
+        }
+        s = build(&m, FL_G1_TWO_SPLIT_AS_PRINTED);
+        double j = jump_of_kind(&s, 2, 16);
         CHECK_MSG(j < 1e-7, "mesh %d: %g degrees", i, j);
         fl_g1_surface_free(&s);
         fl_mesh_free(&m);
     }
 }
 
-/* Eq. 9.6 holds: along every spoke the two micro patches share the tangent plane (normals
+/* Inside a pair the cross split's rows are the C1 conditions over the square domain:
+ * W_i = (E_i-1,1 + E_i,0)/2, Y_i = (X_i-1 + X_i)/2, Z = (Y_i-1 + Y_i+1)/2 for every i, so the
+ * corner at S is regular: Y_k - Z and Y_k+1 - Z are not parallel. */
+static void test_two_split_pairs_are_c1_cross_splits(void)
+{
+    for (int i = 0; i < MESHES; i++) {
+        fl_mesh m = test_mesh(i);
+        fl_g1_surface s = build(&m, FL_G1_TWO_SPLIT);
+        double worst = 0, span = 1e300;
+        for (size_t pr = 0; pr < s.two_split_pairs; pr++) {
+            const double *c[4];
+            for (int k = 0; k < 4; k++)
+                c[k] = s.ctrl + 30 * (4 * pr + (size_t)k);
+            for (int k = 0; k < 4; k++) {
+                const double *L = c[(k + 3) % 4], *R = c[k], *N = c[(k + 1) % 4];
+                double y0[3], y1[3];
+                for (int d = 0; d < 3; d++) {
+                    /* W_k (b201 of R) and b021 of L; E_k-1,1 = b120 of L, E_k,0 = b210 of R */
+                    worst = fmax(worst, fabs(R[6 + d] - L[21 + d]));
+                    worst = fmax(worst, fabs(R[6 + d] - (L[9 + d] + R[3 + d]) / 2));
+                    worst = fmax(worst, fabs(R[15 + d] - (L[12 + d] + R[12 + d]) / 2));
+                    worst = fmax(worst, fabs(R[27 + d] - (L[15 + d] + N[15 + d]) / 2));
+                    y0[d] = R[15 + d] - R[27 + d];
+                    y1[d] = R[24 + d] - R[27 + d];
+                }
+                double a = g1_angle_deg(y0, y1);
+                span = fmin(span, fmin(a, 180 - a));
+            }
+        }
+        CHECK_MSG(worst < 1e-12, "mesh %d: C1 relation off by %g", i, worst);
+        /* measured minimum 0.63 degrees, on the flattened icosphere's rim */
+        CHECK_MSG(span > 0.1, "mesh %d: Y_k - Z, Y_k+1 - Z at %g degrees", i, span);
+        fl_g1_surface_free(&s);
+        fl_mesh_free(&m);
+    }
+}
+
+/* AS PRINTED. Eq. 9.6 holds: along every spoke the two micro patches share the tangent plane (normals
  * agree to 1e-7° at 20 points up to 95% of the way to S). At S itself the four Y_i lie on one
  * line through Z or onto Z ((Y_i - Z) x (Y_i+1 - Z) < 1e-9 |V_i - Z|^2): every micro
  * patch is degenerate there, so the normals at S are not defined by the first derivatives and
@@ -170,7 +225,7 @@ static void test_two_split_spokes_continuous_but_degenerate_at_split_point(void)
 {
     for (int i = 0; i < MESHES; i++) {
         fl_mesh m = test_mesh(i);
-        fl_g1_surface s = build(&m, FL_G1_TWO_SPLIT);
+        fl_g1_surface s = build(&m, FL_G1_TWO_SPLIT_AS_PRINTED);
         double along = 0, sine = 0, at_s = 0;
         for (size_t pr = 0; pr < s.two_split_pairs; pr++) {
             const double *c[4];
@@ -266,22 +321,26 @@ static void test_two_split_report(void)
 {
     for (int i = 0; i < MESHES; i++) {
         fl_mesh m = test_mesh(i);
-        fl_g1_surface s = build(&m, FL_G1_TWO_SPLIT), t = build(&m, FL_G1_THREE_SPLIT);
-        size_t flips, unpaired, f3, u3;
-        double jump = g1_max_edge_jump(&s, 32, &flips, &unpaired);
-        double j3 = g1_max_edge_jump(&t, 32, &f3, &u3);
-        fl_g1_metrics ms, mt;
+        fl_g1_surface s = build(&m, FL_G1_TWO_SPLIT_AS_PRINTED), t = build(&m, FL_G1_THREE_SPLIT);
+        fl_g1_surface c = build(&m, FL_G1_TWO_SPLIT);
+        fl_g1_metrics ms, mt, mc;
         fl_error err;
         CHECK_STATUS(fl_g1_surface_measure(&s, &m, 8, &ms, &err), FL_OK, &err);
         CHECK_STATUS(fl_g1_surface_measure(&t, &m, 8, &mt, &err), FL_OK, &err);
+        CHECK_STATUS(fl_g1_surface_measure(&c, &m, 8, &mc, &err), FL_OK, &err);
         fprintf(stderr,
-                "mesh %d: tri %zu pairs %zu patches %zu | two: jump %.3g flips %zu unp %zu dev "
-                "%.4g | three: jump %.3g flips %zu dev %.4g\n",
-                i, m.triangle_count, s.two_split_pairs, s.patch_count, jump, flips, unpaired,
-                ms.max_deviation, j3, f3, mt.max_deviation);
-        fprintf(stderr, "   spokes %.3g outer %.3g other %.3g | min corner angle two %.3g three %.3g\n",
-                jump_of_kind(&s, 0, 32), jump_of_kind(&s, 1, 32), jump_of_kind(&s, 2, 32),
-                min_corner_angle(&s), min_corner_angle(&t));
+                "mesh %d: %zu triangles, %zu pairs\n"
+                "  two-split:  jump %.2g flips %zu dev %.3g corner angle %.3g\n"
+                "  three-split: jump %.2g flips %zu dev %.3g corner angle %.3g\n"
+                "  as printed: jump %.3g (inner %.3g outer %.3g) flips %zu dev %.3g corner "
+                "angle %.3g\n",
+                i, m.triangle_count, c.two_split_pairs, mc.max_edge_normal_jump_deg,
+                mc.orientation_flips, mc.max_deviation, min_corner_angle(&c),
+                mt.max_edge_normal_jump_deg, mt.orientation_flips, mt.max_deviation,
+                min_corner_angle(&t), ms.max_edge_normal_jump_deg, jump_of_kind(&s, 0, 16),
+                jump_of_kind(&s, 1, 16), ms.orientation_flips, ms.max_deviation,
+                min_corner_angle(&s));
+        fl_g1_surface_free(&c);
         fl_g1_surface_free(&s);
         fl_g1_surface_free(&t);
         fl_mesh_free(&m);
@@ -301,7 +360,8 @@ static void test_two_split_cli(void)
 
 FL_TEST_MAIN(FL_TEST_CASE(test_two_split_interpolates_vertices_and_normals_to_1e12),
              FL_TEST_CASE(test_two_split_pairs_are_thin_and_isolated),
-             FL_TEST_CASE(test_two_split_leaves_the_rest_g1),
+             FL_TEST_CASE(test_two_split_is_g1_on_every_micro_and_macro_edge),
+             FL_TEST_CASE(test_two_split_pairs_are_c1_cross_splits),
              FL_TEST_CASE(test_two_split_spokes_continuous_but_degenerate_at_split_point),
              FL_TEST_CASE(test_two_split_tessellation_is_watertight),
              FL_TEST_CASE(test_two_split_report), FL_TEST_CASE(test_two_split_cli))

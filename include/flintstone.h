@@ -1448,11 +1448,22 @@ typedef enum fl_g1_scheme {
                             * smooth meshes, not on every coarse one: measure it with
                             * fl_g1_surface_measure (docs/smooth.md has the numbers) */
     FL_G1_MACRO = 1,       /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
-    FL_G1_SIX_SPLIT = 2    /* §9.8: six cubic micro patches a triangle (split at the edge
+    FL_G1_SIX_SPLIT = 2,   /* §9.8: six cubic micro patches a triangle (split at the edge
                             * midpoints and the centre), C1 inside each macro triangle, G1
                             * across macro edges by the least-displacement solve of step 5
                             * where that system has a solution: not on some mirror-symmetric
                             * edges (singular_edges; docs/smooth.md has where and why) */
+    FL_G1_TWO_SPLIT = 3,   /* §9.7: pairs of thin triangles (docs/smooth.md: the three-split
+                            * would make a micro angle < 15 degrees) split in two at their
+                            * common edge, every other triangle three-split. Each pair is one
+                            * C1 cross split of its quad (four cubic micro patches), its inner
+                            * points solved with the neighbours' by eq. 9.4 as on a three-split
+                            * edge: G1 where the three-split is (docs/smooth.md) */
+    FL_G1_TWO_SPLIT_AS_PRINTED = 4 /* §9.7 exactly as printed (split at P(1/2,1/2,0), eq. 9.6
+                            * least-displacement solve, eq. 9.7 on the neighbours' edges): NOT
+                            * G1, eq. 9.6 forces a degenerate corner at every split point and
+                            * eq. 9.7 leaves the far end of the outer edges open (docs/smooth.md
+                            * derives and measures both); kept for comparison, not for use */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */
@@ -1468,8 +1479,10 @@ typedef struct fl_g1_surface_options {
  * i, corner 1 by j, corner 2 by k); its corners are the nodes corner[3p..3p+2],
  * counter-clockwise seen from outside. Node n < vertex_count is mesh vertex n; node
  * vertex_count + t is the split point (centre) of macro triangle t; with the six-split, node
- * vertex_count + triangle_count + e is the midpoint of macro edge e. macro[p] is the mesh triangle the
- * patch belongs to. Patches sharing an edge share its two end nodes. */
+ * vertex_count + triangle_count + e is the midpoint of macro edge e; with the two-split, the
+ * four patches of pair k come first (4k .. 4k+3) and their split point is node vertex_count +
+ * the smaller triangle index of the pair. macro[p] is the mesh triangle the patch belongs to.
+ * Patches sharing an edge share its two end nodes. */
 typedef struct fl_g1_surface {
     size_t patch_count;
     double *ctrl;
@@ -1486,10 +1499,12 @@ typedef struct fl_g1_surface {
     size_t singular_edges;      /* three-split: macro edges where eq. 9.4 was dependent and
                                  * the minimal displacement solution was taken; six-split:
                                  * macro edges whose step-5 system was singular (their G1
-                                 * conditions may not hold) */
+                                 * conditions may not hold); two-split: plus the pairs whose
+                                 * eq. 9.6 system was rank-deficient */
     size_t quadratic_edges;     /* macro edges whose boundary curve was made a degree-raised
                                  * quadratic because eq. 9.4 was (nearly) dependent with the
                                  * thesis's cubic curve (docs/smooth.md) */
+    size_t two_split_pairs;     /* two-split: pairs of macro triangles split in two */
 } fl_g1_surface;
 
 /* Builds the surface over a closed, manifold, oriented mesh with coordinates |x| <= 1e150

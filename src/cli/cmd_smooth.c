@@ -11,7 +11,7 @@
 static const char *usage_text =
     "usage: flintstone smooth POLYGON [-o OUT.svg|.xy] [--tangents length|uniform|inverse]\n"
     "                         [--samples N] [--json] [--quiet]\n"
-    "       flintstone smooth MESH [--scheme three-split|six-split|pn|auto] [--tess N]\n"
+    "       flintstone smooth MESH [--scheme three-split|six-split|two-split|pn|auto] [--tess N]\n"
     "                         [--normals area|uniform|inverse] [--tension B] [--samples N]\n"
     "                         [-o OUT.off|.ply|.obj|.stl|.bez] [--json] [--quiet]\n"
     "\n"
@@ -22,7 +22,8 @@ static const char *usage_text =
     "interpolating the vertices and estimated normals (§9.4). Schemes: three-split (§9.6,\n"
     "G1; auto is the same), six-split (§9.8, less oscillation, G1 on most meshes but not\n"
     "on some symmetric ones: check max_edge_normal_jump_deg), pn (the macro patches of\n"
-    "steps 1-3 = PN triangles, only C0). The two-split of §9.7 is not implemented.\n"
+    "steps 1-3 = PN triangles, only C0), two-split (§9.7: pairs of thin triangles split\n"
+    "in two at their common edge as one C1 cross split, the rest three-split; G1).\n"
     "\n"
     "  --tangents W   curve tangent weighting (default length, §9.2 method 1)\n"
     "  --normals W    surface normal weighting (default area, §9.4 method 1)\n"
@@ -34,6 +35,7 @@ static const char *usage_text =
     "  --json         mesh: patches, max_vertex_error, max_normal_error,\n"
     "                 max_edge_normal_jump_deg, orientation_repairs, orientation_flips,\n"
     "                 max_deviation (relative to the mean edge length), quadratic_edges,\n"
+    "                 two_split_pairs,\n"
     "                 seconds; polygon: segments, orientation_repairs, max_tangent_jump_deg,\n"
     "                 seconds\n"
     "\n"
@@ -67,9 +69,10 @@ static int parse_value(smooth_args *a, const char *o, const char *v)
                             strcmp(o, "--normals") ? "length" : "area");
         a->weighting_set = 1;
     } else if (!strcmp(o, "--scheme")) {
-        if (strcmp(v, "three-split") && strcmp(v, "six-split") && strcmp(v, "auto") &&
-            strcmp(v, "pn"))
-            return cli_fail(1, "smooth: --scheme takes three-split, six-split, pn or auto");
+        if (strcmp(v, "three-split") && strcmp(v, "six-split") && strcmp(v, "two-split") &&
+            strcmp(v, "auto") && strcmp(v, "pn"))
+            return cli_fail(1,
+                            "smooth: --scheme takes three-split, six-split, two-split, pn or auto");
         a->scheme = v;
     } else if (!strcmp(o, "--tension")) {
         if (cli_parse_double(v, &a->tension) || !(a->tension > 0 && a->tension < 1))
@@ -207,6 +210,7 @@ static void print_surface(const cli_common *c, const fl_g1_surface *s, const fl_
         cli_json_uint(&j, "orientation_flips", m->orientation_flips);
         cli_json_double(&j, "max_deviation", m->max_deviation);
         cli_json_uint(&j, "quadratic_edges", s->quadratic_edges);
+        cli_json_uint(&j, "two_split_pairs", s->two_split_pairs);
         cli_json_uint(&j, "singular_edges", s->singular_edges);
         cli_json_double(&j, "seconds", seconds);
         cli_json_end(&j);
@@ -233,6 +237,7 @@ static int run_surface(const cli_common *c, const smooth_args *a)
     int scheme = FL_G1_THREE_SPLIT;
     if (a->scheme && !strcmp(a->scheme, "pn")) scheme = FL_G1_MACRO;
     if (a->scheme && !strcmp(a->scheme, "six-split")) scheme = FL_G1_SIX_SPLIT;
+    if (a->scheme && !strcmp(a->scheme, "two-split")) scheme = FL_G1_TWO_SPLIT;
     fl_g1_surface_options o = {.scheme = scheme,
                                .weighting = a->weighting,
                                .tension = a->tension};

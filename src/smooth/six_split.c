@@ -36,7 +36,7 @@ static int ix(int i, int j)
 
 /* The blossom (polar form) of the cubic with control points net at barycentric u1, u2, u3:
  * the control points of any sub-triangle are blossom values of its corners (§9.5, Goldman). */
-static void blossom(const double net[10][3], const double *u1, const double *u2, const double *u3,
+void g1_blossom(const double net[10][3], const double *u1, const double *u2, const double *u3,
                     double *out)
 {
     const double *arg[3] = {u1, u2, u3};
@@ -260,8 +260,8 @@ static int solve_edge(const fl_mesh *m, const double *normals, six_tri *tris, si
     k_point(m, T, t, k1, 0, kb);
     /* subdivision values: m, Y_A and the four centres */
     double x[6][3], nt[3], nu[3], nm[3], y0[3], ylp[3], yrp[3], nl0[3], nr0[3];
-    blossom(T->net, half[k], half[k], half[k], x[1]);
-    blossom(T->net, unit[k], half[k], half[k], x[0]);
+    g1_blossom(T->net, half[k], half[k], half[k], x[1]);
+    g1_blossom(T->net, unit[k], half[k], half[k], x[0]);
     memcpy(x[2], T->p[2 * k], sizeof x[2]);
     memcpy(x[3], U->p[2 * j + 1], sizeof x[3]);
     memcpy(x[4], T->p[2 * k + 1], sizeof x[4]);
@@ -356,8 +356,8 @@ static void macro_six(const fl_mesh *m, const double (*ep)[2][3], size_t t, six_
         k_point(m, T, t, k, 0, kbk);
         for (int d = 0; d < 3; d++)
             T->n[k][d] = 2.0 / 3 * (kf[d] + kbk[d]) - m->xyz[3 * v[k] + d] / 3;
-        blossom(T->net, unit[k], half[k], third, T->p[2 * k]);
-        blossom(T->net, half[k], unit[(k + 1) % 3], third, T->p[2 * k + 1]);
+        g1_blossom(T->net, unit[k], half[k], third, T->p[2 * k]);
+        g1_blossom(T->net, half[k], unit[(k + 1) % 3], third, T->p[2 * k + 1]);
     }
 }
 

@@ -71,6 +71,60 @@ void g1_edge_point(const double *p, const double *n, const double *q, double ten
 int g1_edge_coefficients(const double *d, const double *l, const double *r, const double *n,
                          double *e, double *f, double *g);
 
+/* The blossom (polar form) of a cubic Bézier triangle (control points in fl_g1_surface order)
+ * at barycentric u1, u2, u3 (six_split.c). */
+void g1_blossom(const double net[10][3], const double *u1, const double *u2, const double *u3,
+                double *out);
+
+/* Position of b_ijk (k = 3 - i - j) in a cubic net in fl_g1_surface order. */
+static inline int g1_ix(int i, int j)
+{
+    return (3 - i) * (4 - i) / 2 + (3 - i - j);
+}
+
+/* The two inner control points of the boundary curve along half-edge h: p[0] next to its
+ * start, p[1] next to its end. */
+typedef struct edge_ctrl {
+    double p[2][3];
+} edge_ctrl;
+
+/* One macro triangle's control points before and during the three-split (Figure 9.4 naming):
+ * e[k][0], e[k][1] the edge points of edge k (from vertex k to k+1) near vertex k and k+1,
+ * c111 the centre (step 3), w[k] the points of the micro edge (vertex k, split point) next to
+ * the vertex (step 4), x[k] the inner point of the micro patch on edge k (step 5). */
+typedef struct macro_net {
+    double e[3][2][3];
+    double c111[3];
+    double w[3][3];
+    double x[3][3];
+} macro_net;
+
+/* The macro patch of triangle t (steps 1-3) as 10 control points (surface.c). */
+void g1_macro_ctrl(const fl_mesh *m, size_t t, const macro_net *net, double ctrl[10][3]);
+
+/* The two-split of §9.7 (two_split.c) on top of solved three-split nets: picks pairs of thin
+ * triangles (paired[t] = partner or UINT32_MAX), writes their four micro patches each to
+ * s->ctrl from patch index 0 on (*patches = how many) and re-solves, per eq. 9.7, the inner
+ * point x of every three-split neighbour on the edges it shares with a pair. */
+fl_status g1_two_split(const fl_mesh *m, const double *normals, const uint32_t *opp,
+                       macro_net *nets, fl_g1_surface *s, uint32_t *paired, size_t *patches,
+                       fl_error *err);
+
+/* Pairs of thin triangles (two_split.c): pair_edge[t] = the half-edge of t shared with its
+ * partner, UINT32_MAX for a three-split triangle. No two pairs are adjacent. */
+fl_status g1_choose_pairs(const fl_mesh *m, const uint32_t *opp, uint32_t *pair_edge,
+                          fl_error *err);
+
+/* The G1 two-split (cross split): sets the w of both triangles of every pair to the C1 spoke
+ * points of the quad, before the outer edges are solved by eq. 9.4. */
+void g1_pair_spoke_points(const uint32_t *opp, const uint32_t *pair_edge, size_t nt,
+                          macro_net *nets);
+
+/* Writes the four patches of the pair split across half-edge h from patch p on (their inner
+ * points x solved on the outer edges); returns the next free patch index. */
+size_t g1_emit_cross_split(const fl_mesh *m, const uint32_t *opp, uint32_t h,
+                           const macro_net *nets, fl_g1_surface *s, size_t p);
+
 /* The six-split of §9.8 (six_split.c) over a checked mesh with final vertex normals: fills
  * every patch of s (allocated for 6 patches a triangle) and s->singular_edges. */
 fl_status g1_six_split(const fl_mesh *m, const double *normals, double tension, fl_g1_surface *s,

@@ -40,16 +40,6 @@ void fl_g1_patch_eval(const double *ctrl, double u, double v, double w, double p
     }
 }
 
-/* One macro triangle's control points before and during the split (Figure 9.4 naming):
- * e[k][0], e[k][1] the edge points of edge k (from vertex k to k+1) near vertex k and k+1,
- * c111 the centre (step 3), w[k] the points of the micro edge (vertex k, split point) next to
- * the vertex (step 4), x[k] the inner point of the micro patch on edge k (step 5). */
-typedef struct macro_net {
-    double e[3][2][3];
-    double c111[3];
-    double w[3][3];
-    double x[3][3];
-} macro_net;
 
 /* Step 2: the neighbour projected on the tangent plane at p, a fraction `tension` of the way. */
 void g1_edge_point(const double *p, const double *n, const double *q, double tension,
@@ -62,11 +52,6 @@ void g1_edge_point(const double *p, const double *n, const double *q, double ten
         out[k] = p[k] + tension * (d[k] - s * n[k]);
 }
 
-/* The two inner control points of the boundary curve along half-edge h: p[0] next to its
- * start, p[1] next to its end. */
-typedef struct edge_ctrl {
-    double p[2][3];
-} edge_ctrl;
 
 /* The boundary curve as a degree-raised quadratic with middle point Q on the line where the
  * two vertex tangent planes meet, the point of that line closest to the quadratic that best
@@ -254,8 +239,10 @@ static void put(double *ctrl, int i, int j, const double *p)
     memcpy(ctrl + 3 * net_index(3, i, j), p, 3 * sizeof(double));
 }
 
-/* Step 6 and the three micro patches (vertex k, vertex k+1, split point) of triangle t. */
-static void emit_three_split(const fl_mesh *m, size_t t, const macro_net *net, fl_g1_surface *s)
+/* Step 6 and the three micro patches (vertex k, vertex k+1, split point) of triangle t, written
+ * as patches base, base + 1, base + 2. */
+static void emit_three_split(const fl_mesh *m, size_t t, const macro_net *net, fl_g1_surface *s,
+                             size_t base)
 {
     const uint32_t *v = m->tri + 3 * t;
     double y[3][3], z[3] = {0, 0, 0};
@@ -265,7 +252,7 @@ static void emit_three_split(const fl_mesh *m, size_t t, const macro_net *net, f
             z[d] += y[k][d] / 3;
         }
     for (int k = 0; k < 3; k++) {
-        size_t p = 3 * t + (size_t)k;
+        size_t p = base + (size_t)k;
         int k1 = (k + 1) % 3;
         double *c = s->ctrl + 30 * p;
         put(c, 3, 0, m->xyz + 3 * v[k]);
@@ -285,10 +272,10 @@ static void emit_three_split(const fl_mesh *m, size_t t, const macro_net *net, f
     }
 }
 
-static void emit_macro(const fl_mesh *m, size_t t, const macro_net *net, fl_g1_surface *s)
+void g1_macro_ctrl(const fl_mesh *m, size_t t, const macro_net *net, double ctrl[10][3])
 {
     const uint32_t *v = m->tri + 3 * t;
-    double *c = s->ctrl + 30 * t;
+    double *c = ctrl[0];
     put(c, 3, 0, m->xyz + 3 * v[0]);
     put(c, 0, 3, m->xyz + 3 * v[1]);
     put(c, 0, 0, m->xyz + 3 * v[2]);
@@ -299,7 +286,12 @@ static void emit_macro(const fl_mesh *m, size_t t, const macro_net *net, fl_g1_s
     put(c, 1, 0, net->e[2][0]);
     put(c, 2, 0, net->e[2][1]);
     put(c, 1, 1, net->c111);
-    memcpy(s->corner + 3 * t, v, 3 * sizeof *v);
+}
+
+static void emit_macro(const fl_mesh *m, size_t t, const macro_net *net, fl_g1_surface *s)
+{
+    g1_macro_ctrl(m, t, net, (double(*)[3])(s->ctrl + 30 * t));
+    memcpy(s->corner + 3 * t, m->tri + 3 * t, 3 * sizeof *m->tri);
     s->macro[t] = (uint32_t)t;
 }
 
@@ -311,13 +303,14 @@ static void emit_macro(const fl_mesh *m, size_t t, const macro_net *net, fl_g1_s
 static const double quadratic_below = 1e-3;
 
 static size_t solve_macro_edges(const fl_mesh *m, const double *normals, macro_net *nets,
-                                const uint32_t *opp, unsigned char *quad, fl_g1_surface *s,
-                                int *unsolvable)
+                                const uint32_t *opp, const uint32_t *pair_edge,
+                                unsigned char *quad, fl_g1_surface *s, int *unsolvable)
 {
     size_t flagged = 0;
     s->singular_edges = 0;
     for (size_t h = 0; h < 3 * m->triangle_count; h++) {
         if (opp[h] < h) continue;
+        if (pair_edge && pair_edge[h / 3] == h) continue; /* inside a two-split pair */
         size_t t = h / 3, u = opp[h] / 3;
         int k = (int)(h % 3), j = (int)(opp[h] % 3), k1 = (k + 1) % 3, j1 = (j + 1) % 3;
         macro_net *P = nets + t, *Q = nets + u;
@@ -346,8 +339,8 @@ static size_t solve_macro_edges(const fl_mesh *m, const double *normals, macro_n
 /* Steps 1-5 of the three-split: rounds of boundary curves, macro patches and edge solves until
  * no further edge needs a quadratic boundary curve. */
 static fl_status three_split_nets(const fl_mesh *m, const double *normals, double tension,
-                                  const uint32_t *opp, edge_ctrl *ep, macro_net *nets,
-                                  fl_g1_surface *s, fl_error *err)
+                                  const uint32_t *opp, const uint32_t *pair_edge, edge_ctrl *ep,
+                                  macro_net *nets, fl_g1_surface *s, fl_error *err)
 {
     unsigned char *quad = fl_calloc_array(3 * m->triangle_count, 1);
     if (!quad) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
@@ -356,8 +349,9 @@ static fl_status three_split_nets(const fl_mesh *m, const double *normals, doubl
         boundary_curves(m, normals, tension, opp, quad, ep);
         for (size_t t = 0; t < m->triangle_count; t++)
             macro_patch(m, ep, t, nets + t);
+        if (pair_edge) g1_pair_spoke_points(opp, pair_edge, m->triangle_count, nets);
         unsolvable = 0;
-        if (!solve_macro_edges(m, normals, nets, opp, quad, s, &unsolvable)) break;
+        if (!solve_macro_edges(m, normals, nets, opp, pair_edge, quad, s, &unsolvable)) break;
     }
     s->quadratic_edges = 0;
     for (size_t h = 0; h < 3 * m->triangle_count; h++)
@@ -385,7 +379,9 @@ static fl_status build(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_s
                        fl_error *err)
 {
     size_t nt = m->triangle_count, nv = m->vertex_count;
-    int split = o->scheme == FL_G1_THREE_SPLIT, six = o->scheme == FL_G1_SIX_SPLIT;
+    int two = o->scheme == FL_G1_TWO_SPLIT_AS_PRINTED, six = o->scheme == FL_G1_SIX_SPLIT;
+    int cross = o->scheme == FL_G1_TWO_SPLIT;
+    int split = o->scheme == FL_G1_THREE_SPLIT || two || cross;
     if (nt > (UINT32_MAX - nv) / 6) return fl_fail(err, FL_ERR_INPUT, NULL, -1, "mesh too big");
     if (allocate(s, six ? 6 * nt : split ? 3 * nt : nt, nv))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
@@ -399,29 +395,46 @@ static fl_status build(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_s
     if (six) return g1_six_split(m, s->normal, tension, s, err);
     macro_net *nets = fl_alloc_array(nt, sizeof *nets);
     edge_ctrl *ep = fl_alloc_array(3 * nt, sizeof *ep);
-    uint32_t *opp = NULL;
-    if (!nets || !ep) {
+    uint32_t *opp = NULL, *paired = two || cross ? fl_alloc_array(nt, sizeof *paired) : NULL;
+    if (!nets || !ep || ((two || cross) && !paired)) {
         free(nets);
         free(ep);
+        free(paired);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     }
     if (split) {
         st = g1_opposite_half_edges(m, &opp, err);
-        if (!st) st = three_split_nets(m, s->normal, tension, opp, ep, nets, s, err);
+        if (!st && cross) st = g1_choose_pairs(m, opp, paired, err);
+        if (!st)
+            st = three_split_nets(m, s->normal, tension, opp, cross ? paired : NULL, ep, nets, s,
+                                  err);
     } else {
         boundary_curves(m, s->normal, tension, NULL, NULL, ep);
         for (size_t t = 0; t < nt; t++)
             macro_patch(m, ep, t, nets + t);
     }
-    for (size_t t = 0; !st && t < nt; t++) {
-        if (split)
-            emit_three_split(m, t, nets + t, s);
-        else
-            emit_macro(m, t, nets + t, s);
+    size_t np = 0; /* patches written: the two-split pairs first */
+    if (!st && two) st = g1_two_split(m, s->normal, opp, nets, s, paired, &np, err);
+    for (size_t t = 0; !st && cross && t < nt; t++) {
+        if (paired[t] == UINT32_MAX || opp[paired[t]] < paired[t]) continue;
+        np = g1_emit_cross_split(m, opp, paired[t], nets, s, np);
+        s->two_split_pairs++;
     }
+    for (size_t t = 0; !st && t < nt; t++) {
+        if ((two || cross) && paired[t] != UINT32_MAX) continue;
+        if (split) {
+            emit_three_split(m, t, nets + t, s, np);
+            np += 3;
+        } else {
+            emit_macro(m, t, nets + t, s);
+            np++;
+        }
+    }
+    if (!st) s->patch_count = np;
     free(nets);
     free(ep);
     free(opp);
+    free(paired);
     return st;
 }
 
@@ -431,7 +444,7 @@ fl_status fl_g1_surface_build(const fl_mesh *mesh, const fl_g1_surface_options *
     if (out) memset(out, 0, sizeof *out);
     if (!mesh || !out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "NULL argument");
     fl_g1_surface_options o = opt ? *opt : (fl_g1_surface_options){0};
-    if (o.scheme < 0 || o.scheme > FL_G1_SIX_SPLIT || o.weighting < 0 ||
+    if (o.scheme < 0 || o.scheme > FL_G1_TWO_SPLIT_AS_PRINTED || o.weighting < 0 ||
         o.weighting > FL_G1_WEIGHT_INVERSE || !(o.tension >= 0) || o.tension >= 1)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "bad surface options (scheme, weighting, tension in [0, 1))");

@@ -115,7 +115,11 @@ static void sm_surface(fz_in *in, uint8_t head)
     int bad = sm_mesh_bad(&m);
     double scale = 0;
     for (size_t i = 0; i < 3 * nv; i++) scale = fmax(scale, fabs(xyz[i]));
-    fl_g1_surface_options o = {(head >> 3) & 1, (head >> 4) & 3, (head & 64) ? 0.4 : 0};
+    /* Bit 1 (unused before round 4, so older corpus entries keep their meaning) picks the
+     * six-split or the two-split instead of the three-split / PN patches. */
+    int scheme = (head >> 3) & 1;
+    if (head & 2) scheme = scheme ? FL_G1_TWO_SPLIT : FL_G1_SIX_SPLIT;
+    fl_g1_surface_options o = {scheme, (head >> 4) & 3, (head & 64) ? 0.4 : 0};
     fl_g1_surface s;
     fl_error err;
     memset(&err, 0, sizeof err);
@@ -129,14 +133,18 @@ static void sm_surface(fz_in *in, uint8_t head)
     /* A valid mesh may still have a vertex whose normal sum vanishes (FL_ERR_INPUT, documented
      * for fl_g1_vertex_normals) or no solution of eq. 9.3a (FL_ERR_ALGORITHM, three-split). */
     if (st != FL_OK) {
-        FZ_ASSERT(st == FL_ERR_INPUT || (st == FL_ERR_ALGORITHM && o.scheme == FL_G1_THREE_SPLIT),
+        FZ_ASSERT(st == FL_ERR_INPUT || (st == FL_ERR_ALGORITHM && o.scheme != FL_G1_MACRO),
                   "valid mesh failed (%d): %s", (int)st, err.message);
         FZ_ASSERT(s.ctrl == NULL && s.patch_count == 0, "*out not zeroed on failure");
         return;
     }
     FZ_ASSERT(s.vertex_count == nv, "vertex count");
-    FZ_ASSERT(s.patch_count == (o.scheme == FL_G1_MACRO ? nt : 3 * nt), "patch count %zu",
-              s.patch_count);
+    /* Patches: one (PN), three or six a triangle; a two-split pair has four for its two. */
+    size_t want = o.scheme == FL_G1_MACRO       ? nt
+                  : o.scheme == FL_G1_SIX_SPLIT ? 6 * nt
+                                                : 3 * nt - 2 * s.two_split_pairs;
+    FZ_ASSERT(2 * s.two_split_pairs <= nt, "%zu pairs of %zu triangles", s.two_split_pairs, nt);
+    FZ_ASSERT(s.patch_count == want, "patch count %zu, expected %zu", s.patch_count, want);
     for (size_t i = 0; i < nv; i++) {
         const double *nr = s.normal + 3 * i;
         FZ_ASSERT(fabs(sqrt(nr[0] * nr[0] + nr[1] * nr[1] + nr[2] * nr[2]) - 1) <= 1e-9,

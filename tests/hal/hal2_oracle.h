@@ -139,4 +139,39 @@ static inline double oracle_deviation(const fl_polygon *orig, const fl_polygon *
     return worst;
 }
 
+/* Builds both trees, runs fl_hal2_intersect with and without the early exit and checks them
+ * against every edge pair by the exact oracle: the same pairs in the same order, the early exit
+ * reporting a real pair exactly when one exists. Returns the number of meeting pairs. */
+static inline size_t check_hal2_intersection(const fl_polygon *a, const fl_polygon *b)
+{
+    fl_hal2 ha, hb;
+    fl_error err;
+    CHECK_STATUS(fl_hal2_build(a, NULL, &ha, &err), FL_OK, &err);
+    CHECK_STATUS(fl_hal2_build(b, NULL, &hb, &err), FL_OK, &err);
+    fl_hal2_pairs all, first;
+    CHECK_STATUS(fl_hal2_intersect(&ha, &hb, 0, &all, &err), FL_OK, &err);
+    CHECK_STATUS(fl_hal2_intersect(&ha, &hb, 1, &first, &err), FL_OK, &err);
+    size_t k = 0, mismatches = 0;
+    for (size_t i = 0; i < a->vertex_count; i++)
+        for (size_t j = 0; j < b->vertex_count; j++) {
+            if (!oracle_segments_meet(a->xy + 2 * i, a->xy + 2 * ring_next(a, i), b->xy + 2 * j,
+                                      b->xy + 2 * ring_next(b, j)))
+                continue;
+            if (k >= all.count || all.pairs[2 * k] != i || all.pairs[2 * k + 1] != j) mismatches++;
+            k++;
+        }
+    CHECK_EQ_INT(all.count, k);
+    CHECK_EQ_INT(mismatches, 0);
+    CHECK_EQ_INT(first.count, k > 0);
+    if (first.count == 1) /* the early exit reports a real pair */
+        CHECK(oracle_segments_meet(
+            a->xy + 2 * first.pairs[0], a->xy + 2 * ring_next(a, first.pairs[0]),
+            b->xy + 2 * first.pairs[1], b->xy + 2 * ring_next(b, first.pairs[1])));
+    fl_hal2_pairs_free(&all);
+    fl_hal2_pairs_free(&first);
+    fl_hal2_free(&ha);
+    fl_hal2_free(&hb);
+    return k;
+}
+
 #endif /* HAL2_ORACLE_H */

@@ -155,34 +155,6 @@ static void test_hal2_inclusion_rejects_non_finite_queries(void)
     fl_hal2_free(&h);
 }
 
-/* All-pairs brute force; returns the count and checks the sorted list equals hal's. */
-static void check_intersection(const fl_polygon *a, const fl_polygon *b)
-{
-    fl_hal2 ha, hb;
-    fl_error err;
-    CHECK_STATUS(fl_hal2_build(a, NULL, &ha, &err), FL_OK, &err);
-    CHECK_STATUS(fl_hal2_build(b, NULL, &hb, &err), FL_OK, &err);
-    fl_hal2_pairs all, first;
-    CHECK_STATUS(fl_hal2_intersect(&ha, &hb, 0, &all, &err), FL_OK, &err);
-    CHECK_STATUS(fl_hal2_intersect(&ha, &hb, 1, &first, &err), FL_OK, &err);
-    size_t k = 0, mismatches = 0;
-    for (size_t i = 0; i < a->vertex_count; i++)
-        for (size_t j = 0; j < b->vertex_count; j++) {
-            if (!oracle_segments_meet(a->xy + 2 * i, a->xy + 2 * ring_next(a, i), b->xy + 2 * j,
-                                      b->xy + 2 * ring_next(b, j)))
-                continue;
-            if (k >= all.count || all.pairs[2 * k] != i || all.pairs[2 * k + 1] != j) mismatches++;
-            k++;
-        }
-    CHECK_EQ_INT(all.count, k);
-    CHECK_EQ_INT(mismatches, 0);
-    CHECK_EQ_INT(first.count, k > 0);
-    fl_hal2_pairs_free(&all);
-    fl_hal2_pairs_free(&first);
-    fl_hal2_free(&ha);
-    fl_hal2_free(&hb);
-}
-
 static void test_hal2_intersection_matches_all_pairs_on_random_stars(void)
 {
     for (unsigned long long seed = 1; seed <= 12; seed++) {
@@ -199,7 +171,7 @@ static void test_hal2_intersection_matches_all_pairs_on_random_stars(void)
         double off = 40.0 - 3.0 * (double)seed;
         star_ring(xy, 150, off, 0.5 * off, 9, &rng);
         tp_add_ring(&b, xy, 150, 0);
-        check_intersection(&a.pg, &b.pg);
+        check_hal2_intersection(&a.pg, &b.pg);
         fl_polygon_free(&a.pg);
         fl_polygon_free(&b.pg);
     }
@@ -220,8 +192,8 @@ static void test_hal2_intersection_counts_touching_and_overlapping_edges(void)
     tp_add_ring(&b, r, 4, 0);
     double s[] = {6, 2, 7, 1, 8, 2, 7, 3}; /* a diamond touching the base edge y = 2 at x=6..8 */
     tp_add_ring(&b, s, 4, 0);
-    check_intersection(&a.pg, &b.pg);
-    check_intersection(&a.pg, &a.pg); /* a polygon against itself: every edge meets its
+    check_hal2_intersection(&a.pg, &b.pg);
+    check_hal2_intersection(&a.pg, &a.pg); /* a polygon against itself: every edge meets its
                                          neighbours */
     fl_polygon_free(&a.pg);
     fl_polygon_free(&b.pg);

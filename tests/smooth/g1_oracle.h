@@ -17,6 +17,22 @@ static int g1_pe_cmp(const void *a, const void *b)
     return x->key < y->key ? -1 : x->key > y->key ? 1 : (x->pe > y->pe) - (x->pe < y->pe);
 }
 
+/* The 3 * patch_count patch edges (edge k of patch p is p * 3 + k, from corner k to corner
+ * k + 1) keyed by their unordered corner-node pair and sorted, so the two sides of an edge are
+ * neighbours. malloc'd; free() it. */
+static inline g1_pe *g1_sorted_patch_edges(const fl_g1_surface *s)
+{
+    size_t ne = 3 * s->patch_count;
+    g1_pe *pe = malloc(ne * sizeof *pe);
+    for (size_t i = 0; i < ne; i++) {
+        uint64_t a = s->corner[i], b = s->corner[3 * (i / 3) + (i + 1) % 3];
+        pe[i].key = a < b ? (a << 32 | b) : (b << 32 | a);
+        pe[i].pe = (uint32_t)i;
+    }
+    qsort(pe, ne, sizeof *pe, g1_pe_cmp);
+    return pe;
+}
+
 static inline double g1_angle_deg(const double *a, const double *b)
 {
     double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
@@ -43,13 +59,7 @@ static inline double g1_max_edge_jump(const fl_g1_surface *s, int samples, size_
                                       size_t *unpaired)
 {
     size_t ne = 3 * s->patch_count;
-    g1_pe *pe = malloc(ne * sizeof *pe);
-    for (size_t i = 0; i < ne; i++) {
-        uint64_t a = s->corner[i], b = s->corner[3 * (i / 3) + (i + 1) % 3];
-        pe[i].key = a < b ? (a << 32 | b) : (b << 32 | a);
-        pe[i].pe = (uint32_t)i;
-    }
-    qsort(pe, ne, sizeof *pe, g1_pe_cmp);
+    g1_pe *pe = g1_sorted_patch_edges(s);
     double worst = 0;
     *flips = *unpaired = 0;
     for (size_t i = 0; i < ne; i++) {

@@ -54,13 +54,7 @@ static fl_g1_surface build(const fl_mesh *m, int scheme)
 static double jump_of_kind(const fl_g1_surface *s, int kind, int samples)
 {
     size_t ne = 3 * s->patch_count, np = 4 * s->two_split_pairs;
-    g1_pe *pe = malloc(ne * sizeof *pe);
-    for (size_t i = 0; i < ne; i++) {
-        uint64_t a = s->corner[i], b = s->corner[3 * (i / 3) + (i + 1) % 3];
-        pe[i].key = a < b ? (a << 32 | b) : (b << 32 | a);
-        pe[i].pe = (uint32_t)i;
-    }
-    qsort(pe, ne, sizeof *pe, g1_pe_cmp);
+    g1_pe *pe = g1_sorted_patch_edges(s);
     double worst = 0;
     for (size_t i = 0; i + 1 < ne; i++) {
         if (pe[i].key != pe[i + 1].key) continue;

@@ -328,6 +328,22 @@ static void test_skin_spacing_below_resolution(void)
     CHECK(m.xyz == NULL);
 }
 
+/* Round 4: a ball of subnormal weight. sqrt(t w) underflowed to 0, the index dropped the ball's
+ * simplices, and G at its centre came from the other ball: 40.8 instead of about -t w (which
+ * itself rounds to -0 here). The centre must not be reported outside. */
+static void test_skin_subnormal_weight_keeps_its_ball(void)
+{
+    double balls[] = {-8, -8, -2.75, 0.5, -4, -7.875, -7.75, 4.9406564584124654e-324};
+    fl_skin_function *g = NULL;
+    fl_error err;
+    CHECK_STATUS(fl_skin_function_new(balls, 2, 0.5, &g, &err), FL_OK, &err);
+    if (!g) return;
+    double v0 = fl_skin_function_value(g, balls), v1 = fl_skin_function_value(g, balls + 4);
+    CHECK_MSG(v0 < 0, "G(centre 0) = %g", v0);
+    CHECK_MSG(v1 <= 0, "G(centre of the subnormal ball) = %g", v1);
+    fl_skin_function_free(g);
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
@@ -342,6 +358,7 @@ int main(void)
         FL_TEST_CASE(test_skin_flat_box_grid),
         FL_TEST_CASE(test_svg_halfplane_huge_disc),
         FL_TEST_CASE(test_skin_spacing_below_resolution),
+        FL_TEST_CASE(test_skin_subnormal_weight_keeps_its_ball),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

@@ -174,4 +174,22 @@ static inline size_t check_hal2_intersection(const fl_polygon *a, const fl_polyg
     return k;
 }
 
+/* Builds the tree of p and checks fl_hal2_contains on the n queries q against oracle_where. */
+static inline void check_hal2_contains(const fl_polygon *p, const double *q, size_t n)
+{
+    fl_hal2 h;
+    fl_error err;
+    CHECK_STATUS(fl_hal2_build(p, NULL, &h, &err), FL_OK, &err);
+    uint8_t *where = malloc(n + 1);
+    CHECK_STATUS(fl_hal2_contains(&h, q, n, where, &err), FL_OK, &err);
+    size_t bad = 0;
+    for (size_t k = 0; k < n; k++)
+        if (where[k] != oracle_where(p, q + 2 * k) && bad++ < 5)
+            fprintf(stderr, "query (%.17g, %.17g): hal %d, brute force %d\n", q[2 * k],
+                    q[2 * k + 1], where[k], oracle_where(p, q + 2 * k));
+    CHECK_EQ_INT(bad, 0);
+    free(where);
+    fl_hal2_free(&h);
+}
+
 #endif /* HAL2_ORACLE_H */

@@ -622,6 +622,31 @@ fl_status fl_gamma_graph(const double *coords, size_t n, int dim, const fl_gamma
 int fl_gamma_simplex_params(const double *coords, size_t n, int dim, const uint32_t *simplex,
                             double *c0, double *c1);
 
+/* fl_gamma_simplex_params for `count` simplices at once (dim indices each, in `simplices`):
+ * c0[i], c1[i] receive (c0', c1') of simplex i, bit for bit what fl_gamma_simplex_params gives,
+ * and found[i] (found may be NULL) 1, or 0 with c0[i] = c1[i] = NaN when no N_γ of it is empty.
+ * The points sit in a bucket grid and each simplex visits only the points that can still change
+ * its answer (nearest first around its smallest ball; docs/gamma.md "Many simplices"), so a
+ * simplex with points on both sides of its hyperplane costs about the points within a few of its
+ * radii instead of N; one on the convex hull still scans everything. Errors: FL_ERR_USAGE for
+ * NULL arrays or dim other than 2/3; FL_ERR_INPUT for non-finite or coincident points, an index
+ * out of range or a repeated vertex (nothing is written then); FL_ERR_NOMEM. */
+fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
+                                    const uint32_t *simplices, size_t count, double *c0,
+                                    double *c1, int *found, fl_error *err);
+
+/* The smallest c1' (Def. 3.3) over `count` simplices (dim indices each), counting a simplex
+ * with no empty N_γ as -1: the largest c0 for which γ([-1,1],[c0,1]) contains all of them (3D
+ * constriction's augmented_c0). Bit for bit the minimum of fl_gamma_simplex_params over them,
+ * but a simplex is evaluated exactly only when a point lies in its lens N_γ(m, m) for the
+ * current minimum m (Lemma 3.2; a box query around it), so only the few simplices that lower the
+ * minimum pay a long scan (docs/gamma.md "Many simplices"). *argmin (may be NULL) receives the
+ * index of a simplex attaining it (count when count is 0, *min_c1 then NaN). Errors as
+ * fl_gamma_simplices_params. */
+fl_status fl_gamma_simplices_min_c1(const double *coords, size_t n, int dim,
+                                    const uint32_t *simplices, size_t count, double *min_c1,
+                                    size_t *argmin, fl_error *err);
+
 /* Parses "c0,c1" (range 0) or "c0,c1,c2,c3" (range 1) into *params and validates it. */
 fl_status fl_gamma_params_parse(const char *text, fl_gamma_params *params, fl_error *err);
 

@@ -15,7 +15,8 @@
 # Then one QUALITY line per surface with a known truth (the demo peanut of data/demo, and the
 # vertices of libcgal-demo's genus-0 meshes blobby, cow, bull with the mesh as truth): the
 # one-sided Hausdorff distance surface -> truth (`flintstone hausdorff`, upper bound) and the
-# area (`flintstone check`) of ours and of CGAL's, and the truth's area.
+# area (`flintstone check`) of ours and of CGAL's, the fraction of the truth's triangles each
+# recovered (same vertex triple; the libcgal-demo meshes only), and the truth's area.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 cache=${BENCH_CACHE:-$root/bench/cache}
@@ -64,8 +65,8 @@ for rel in "${inputs[@]}"; do
     "$(jget self_intersections <<<"$cc")"
 done
 
-printf '%-12s %7s | %9s %9s | %9s %9s | %9s\n' input points ours_h ours_area cgal_h cgal_area \
-  truth_area
+printf '%-12s %7s | %9s %9s %8s | %9s %9s %8s | %9s\n' input points ours_h ours_area ours_rec \
+  cgal_h cgal_area cgal_rec truth_area
 grep -v '^#' "$root/data/demo/peanut.xyz" >"$out/peanut.xyz"
 quality=("$out/peanut.xyz:$root/data/demo/peanut-truth.off")
 for m in blobby cow bull; do
@@ -84,7 +85,28 @@ for pair in "${quality[@]}"; do
     "import json,sys; print('%.4f' % json.load(sys.stdin)['h_ab'][1])"; }
   aget() { "$fl" check "$1" --json | python3 -c \
     "import json,sys; print('%.3f' % json.load(sys.stdin)['area'])"; }
-  printf 'QUALITY %-12s %7d | %9s %9s | %9s %9s | %9s\n' "$name" "$(wc -l <"$pts")" \
+  # Fraction of the truth's triangles (as unordered vertex triples) that the surface has; only
+  # where the points are the truth's vertices in order (not the resampled peanut).
+  rget() { [ "$name" != peanut ] || { echo -; return; }; python3 - "$1" "$truth" <<'PY'
+import sys
+def tris(path):
+    w = open(path).read().split()
+    i = 1 if w[0] == 'OFF' else 0
+    nv, nf = int(w[i]), int(w[i + 1])
+    j = i + 3 + 3 * nv
+    out = set()
+    for _ in range(nf):
+        k = int(w[j])
+        if k == 3:
+            out.add(tuple(sorted(int(x) for x in w[j + 1:j + 4])))
+        j += k + 1
+    return out
+got, ref = tris(sys.argv[1]), tris(sys.argv[2])
+print('%.3f' % (len(got & ref) / len(ref)))
+PY
+  }
+  printf 'QUALITY %-12s %7d | %9s %9s %8s | %9s %9s %8s | %9s\n' "$name" "$(wc -l <"$pts")" \
     "$(hget "$out/$name.q.ours.off")" "$(aget "$out/$name.q.ours.off")" \
-    "$(hget "$out/$name.q.cgal.off")" "$(aget "$out/$name.q.cgal.off")" "$(aget "$truth")"
+    "$(rget "$out/$name.q.ours.off")" "$(hget "$out/$name.q.cgal.off")" \
+    "$(aget "$out/$name.q.cgal.off")" "$(rget "$out/$name.q.cgal.off")" "$(aget "$truth")"
 done

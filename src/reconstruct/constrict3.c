@@ -184,9 +184,8 @@ static int push_cb(constrict3_state *s, void *ctx, uint32_t t)
  * unlocking flips (§5.4, constrict3_unlock.c) and on; when stalled with points inside, the
  * chase of constrict3_chase.c (early flips, then removals near the inside points). Returns FL_OK, or FL_ERR_NOMEM /
  * FL_ERR_ALGORITHM (cancelled) through err. */
-static fl_status constrict(constrict3_state *s, size_t unique, const uint32_t *duplicate_of,
-                           const fl_reconstruct3_options *opt, fl_reconstruction3 *out,
-                           fl_error *err)
+static fl_status constrict(constrict3_state *s, size_t unique, const fl_reconstruct3_options *opt,
+                           fl_reconstruction3 *out, fl_error *err)
 {
     constrict3_heap h = {0};
     push_ctx ctx = {&h, opt->criterion};
@@ -208,9 +207,7 @@ static fl_status constrict(constrict3_state *s, size_t unique, const uint32_t *d
         if (h.count == 0) {
             if (all_on || opt->no_augment) break;
             size_t flips = 0;
-            if (constrict3_unlock(s, duplicate_of, push_cb, &ctx, INFINITY, &flips,
-                                  &out->augmented_c0))
-                goto nomem;
+            if (constrict3_unlock(s, push_cb, &ctx, INFINITY, &flips)) goto nomem;
             out->flip_count += flips;
             if (flips == 0) break; /* locked for good: the reason says why */
             continue;
@@ -222,8 +219,7 @@ static fl_status constrict(constrict3_state *s, size_t unique, const uint32_t *d
         if (isnan(removal_key(s, e.tet, opt->criterion)))
             continue; /* its vertex or edge joined the boundary meanwhile (Alg. 5.1 line 5) */
         if (chasing) {
-            int rc = constrict3_chase_before(s, &chase, &h, e, duplicate_of, push_cb, &ctx,
-                                             &out->flip_count, &out->augmented_c0);
+            int rc = constrict3_chase_before(s, &chase, &h, e, push_cb, &ctx, &out->flip_count);
             if (rc < 0) goto nomem;
             if (rc > 0) continue;
         }
@@ -293,6 +289,7 @@ fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_opt
     if (st != FL_OK) return st;
     /* the state takes over the triangulation's arrays: unlocking flips grow and change them */
     constrict3_state s = {0};
+    fl_vec_init(&s.added, sizeof(uint32_t));
     s.p = xyz;
     s.n = n;
     s.tet_count = s.cap = s.region_count = dt.tet_count;
@@ -310,9 +307,12 @@ fl_status fl_reconstruct3(const double *xyz, size_t n, const fl_reconstruct3_opt
         st = constrict3_mark_kept(&s, dt.duplicate_of, opt->keep, opt->keep_count, err);
         if (st != FL_OK) goto done;
     }
-    out->augmented_c0 = NAN; /* lowered by the unlocking flips, if any */
-    st = constrict(&s, dt.unique_count, dt.duplicate_of, opt, out, err);
+    st = constrict(&s, dt.unique_count, opt, out, err);
     if (st != FL_OK) goto done;
+    if (constrict3_augmented_c0(&s, dt.duplicate_of, &out->augmented_c0) != 0) {
+        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory in 3D constriction");
+        goto done;
+    }
     out->point_count = n;
     out->unique_count = dt.unique_count;
     out->delaunay_tet_count = dt.tet_count;
@@ -332,6 +332,7 @@ done:
     free(s.version);
     free(s.keepmask);
     free(s.bfaces);
+    fl_vec_free(&s.added);
     fl_dt3_free(&dt);
     return st;
 }

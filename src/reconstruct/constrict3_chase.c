@@ -99,8 +99,8 @@ static int restore_deferred(constrict3_chase *c, constrict3_heap *h)
 }
 
 int constrict3_chase_before(constrict3_state *s, constrict3_chase *c, constrict3_heap *h,
-                            constrict3_entry e, const uint32_t *duplicate_of,
-                            constrict3_push_fn push, void *ctx, size_t *flips, double *c0)
+                            constrict3_entry e, constrict3_push_fn push, void *ctx,
+                            size_t *flips)
 {
     /* tetrahedra made by flips after the last marking hold an inside point: near */
     if (c->focus && e.tet < c->near_count && !c->near[e.tet])
@@ -108,7 +108,7 @@ int constrict3_chase_before(constrict3_state *s, constrict3_chase *c, constrict3
     if (++c->stall < c->limit) return 0;
     c->stall = 0;
     size_t made = 0;
-    if (constrict3_unlock(s, duplicate_of, push, ctx, e.key, &made, c0) != 0) return -1;
+    if (constrict3_unlock(s, push, ctx, e.key, &made) != 0) return -1;
     *flips += made;
     if (made) {
         c->limit = CHASE_STALL;

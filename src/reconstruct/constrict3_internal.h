@@ -63,6 +63,8 @@ typedef struct constrict3_state {
     size_t region_count; /* tetrahedra not removed */
     size_t keep_total;   /* distinct kept triangles */
     size_t keep_on;      /* of those, on the boundary now */
+    fl_vec added;        /* uint32_t triples: the triangles the unlocking flips added (input
+                            indices), for the augmented_c0 report */
 } constrict3_state;
 
 /* Marks the kept triangles (§5.7) in s->keepmask (allocated here) and counts those on the
@@ -76,11 +78,14 @@ fl_status constrict3_mark_kept(constrict3_state *s, const uint32_t *rep, const u
  * (constrict3_chase.c; only flips whose key is below max_key): makes non-conflicting flips, each turning a region
  * tetrahedron with a boundary face into one whose opposite vertex is an inside point (so it is
  * removable), and pushes those onto the heap through push(). *flips receives how many were
- * made (0: none possible) and *c0 is lowered to the smallest c1' of the triangles added.
+ * made (0: none possible); the triangles they add are appended to s->added.
  * Returns 0, or -1 on NOMEM. */
 typedef int (*constrict3_push_fn)(constrict3_state *s, void *ctx, uint32_t t);
-int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constrict3_push_fn push,
-                      void *ctx, double max_key, size_t *flips, double *c0);
+int constrict3_unlock(constrict3_state *s, constrict3_push_fn push, void *ctx, double max_key,
+                      size_t *flips);
+/* *c0 = the smallest c1' (Def. 3.3) of the triangles in s->added, over the distinct points (dup
+ * maps every input index to its first duplicate); NaN when there are none. 0, or -1 on NOMEM. */
+int constrict3_augmented_c0(const constrict3_state *s, const uint32_t *dup, double *c0);
 
 /* Chasing the last inside points (constrict3_chase.c): while constriction is stalled, early
  * unlocking flips that beat the heap's root, else removals only near the inside points. */
@@ -99,8 +104,8 @@ void constrict3_chase_free(constrict3_chase *c);
 /* Before removing popped entry e (valid and removable) while points are inside: 0 = remove it,
  * 1 = it was deferred or flips were made (pop again), -1 = NOMEM. Flips are added to *flips. */
 int constrict3_chase_before(constrict3_state *s, constrict3_chase *c, constrict3_heap *h,
-                            constrict3_entry e, const uint32_t *duplicate_of,
-                            constrict3_push_fn push, void *ctx, size_t *flips, double *c0);
+                            constrict3_entry e, constrict3_push_fn push, void *ctx,
+                            size_t *flips);
 /* The heap ran empty: while focused with entries deferred, doubles the radius and returns them
  * to the heap (1); 0 when there is nothing to widen; -1 on NOMEM. */
 int constrict3_chase_widen(constrict3_state *s, constrict3_chase *c, constrict3_heap *h);

@@ -232,36 +232,48 @@ static void flip23(constrict3_state *s, const candidate *cd, uint32_t slot[3])
     s->region_count++;
 }
 
-/* Lowers *c0 to the smallest c0 for which γ([-1,1],[c0,1]) holds the triangles w p x, w p y,
- * w p z that a flip adds: by Def. 3.3 a triangle is in it when some N_γ(c, c') with c' >= c0 is
- * empty, i.e. when its largest empty neighbourhood's c1' (fl_gamma_simplex_params) is >= c0.
- * `u` holds the distinct points and `map` their compact indices (fl_gamma_simplex_params wants
- * distinct points). A triangle without any empty neighbourhood counts as -1, the end of the
- * range. */
-static void lower_c0(const double *u, size_t un, const uint32_t *map, uint32_t w, uint32_t p,
-                     const uint32_t *xyz, double *c0)
+/* Records the triangles w p x, w p y, w p z that a flip adds (input indices), for the
+ * augmented_c0 report (constrict3_augmented_c0). */
+static int record_added(constrict3_state *s, uint32_t w, uint32_t p, const uint32_t *xyz)
 {
     for (int i = 0; i < 3; i++) {
-        uint32_t tri[3] = {map[w], map[p], map[xyz[i]]};
-        double a, c1 = -1;
-        if (fl_gamma_simplex_params(u, un, 3, tri, &a, &c1) != 1) c1 = -1;
-        if (isnan(*c0) || c1 < *c0) *c0 = c1;
-    }
-}
-
-static int compact(const constrict3_state *s, const uint32_t *dup, double **u, size_t *un,
-                   uint32_t **map)
-{
-    *u = fl_alloc_array(s->n, 3 * sizeof **u);
-    *map = fl_alloc_array(s->n, sizeof **map);
-    if (!*u || !*map) return -1;
-    *un = 0;
-    for (size_t i = 0; i < s->n; i++) {
-        if (dup[i] != i) continue;
-        memcpy(*u + 3 * *un, s->p + 3 * i, 3 * sizeof **u);
-        (*map)[i] = (uint32_t)(*un)++;
+        uint32_t tri[3] = {w, p, xyz[i]};
+        if (fl_vec_push(&s->added, tri, 3) != 0) return -1;
     }
     return 0;
+}
+
+/* The smallest c0 for which γ([-1,1],[c0,1]) holds every triangle the flips added: by Def. 3.3
+ * a triangle is in it when some N_γ(c, c') with c' >= c0 is empty, i.e. when its largest empty
+ * neighbourhood's c1' is >= c0. A triangle without any empty neighbourhood counts as -1, the end
+ * of the range. All triangles are evaluated at the end in one fl_gamma_simplices_min_c1 call
+ * over the distinct points, which scans all points only for the few triangles that lower the
+ * minimum: evaluating each against every point as it was added cost O(N) a flip and dominated
+ * large runs (3x the Delaunay time at 10^5 points). */
+int constrict3_augmented_c0(const constrict3_state *s, const uint32_t *dup, double *c0)
+{
+    size_t m = s->added.count / 3;
+    *c0 = NAN;
+    if (m == 0) return 0;
+    double *u = fl_alloc_array(s->n, 3 * sizeof *u);
+    uint32_t *map = fl_alloc_array(s->n, sizeof *map), *tri = fl_alloc_array(m, 3 * sizeof *tri);
+    int rc = -1;
+    if (!u || !map || !tri) goto done;
+    size_t un = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        if (dup[i] != i) continue;
+        memcpy(u + 3 * un, s->p + 3 * i, 3 * sizeof *u);
+        map[i] = (uint32_t)un++;
+    }
+    const uint32_t *a = s->added.data;
+    for (size_t i = 0; i < 3 * m; i++) tri[i] = map[a[i]];
+    if (fl_gamma_simplices_min_c1(u, un, 3, tri, m, c0, NULL, NULL) != FL_OK) goto done;
+    rc = 0;
+done:
+    free(u);
+    free(map);
+    free(tri);
+    return rc;
 }
 
 /* Marks the region tetrahedra within two steps (across faces) of a tetrahedron with an inside
@@ -289,14 +301,11 @@ static int mark_near_inside(const constrict3_state *s, uint8_t **near)
     return 0;
 }
 
-int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constrict3_push_fn push,
-                      void *ctx, double max_key, size_t *flips, double *c0)
+int constrict3_unlock(constrict3_state *s, constrict3_push_fn push, void *ctx, double max_key,
+                      size_t *flips)
 {
     cand_vec v = {0};
     uint8_t *used = NULL;
-    double *u = NULL;
-    uint32_t *map = NULL;
-    size_t un = 0;
     int rc = -1;
     uint8_t *near = NULL;
     *flips = 0;
@@ -314,7 +323,7 @@ int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constri
     }
     qsort(v.a, v.count, sizeof *v.a, cand_cmp);
     used = fl_calloc_array(s->n, 1);
-    if (!used || compact(s, duplicate_of, &u, &un, &map) != 0) goto done;
+    if (!used) goto done;
     for (size_t i = 0; i < v.count; i++) {
         const candidate *cd = &v.a[i];
         if (!(cd->key < max_key)) break;
@@ -332,7 +341,7 @@ int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constri
             uint32_t slot[3];
             flip23(s, &first, slot);
             (*flips)++;
-            lower_c0(u, un, map, vx, cd->p, f2, c0);
+            if (record_added(s, vx, cd->p, f2) != 0) goto done;
             second.t2 = s->adj[4 * (size_t)cd->t1 + cd->kw];
             for (int j = 0; j < 3; j++)
                 if (push(s, ctx, slot[j]) != 0) goto done;
@@ -346,7 +355,7 @@ int constrict3_unlock(constrict3_state *s, const uint32_t *duplicate_of, constri
         flip23(s, cd, slot);
         used[cd->p] = 1;
         (*flips)++;
-        lower_c0(u, un, map, w, cd->p, xyz, c0);
+        if (record_added(s, w, cd->p, xyz) != 0) goto done;
         for (int j = 0; j < 3; j++)
             if (push(s, ctx, slot[j]) != 0) goto done;
     }
@@ -355,7 +364,5 @@ done:
     free(near);
     free(v.a);
     free(used);
-    free(u);
-    free(map);
     return rc;
 }

@@ -61,6 +61,61 @@ static void check_tets_positive(const double *p, const fl_reconstruction3 *r)
     CHECK_EQ_INT(bad, 0);
 }
 
+static int cmp_triple(const void *a, const void *b)
+{
+    const uint32_t *x = a, *y = b;
+    for (int i = 0; i < 3; i++)
+        if (x[i] != y[i]) return x[i] < y[i] ? -1 : 1;
+    return 0;
+}
+
+static void sorted_face(const uint32_t *v, int k, uint32_t *f)
+{
+    uint32_t a = v[(k + 1) % 4], b = v[(k + 2) % 4], c = v[(k + 3) % 4], t;
+    if (a > b) t = a, a = b, b = t;
+    if (b > c) t = b, b = c, c = t;
+    if (a > b) t = a, a = b, b = t;
+    f[0] = a, f[1] = b, f[2] = c;
+}
+
+/* augmented_c0 is the smallest c1' of the triangles the flips added, so every face of the
+ * final tetrahedra lies in γ([-1,1],[c0,1]). The faces that are not faces of the Delaunay
+ * tetrahedralization (fl_dt3_build of the same points) came from flips; for each, c1' by the
+ * brute force of Theorem 3.1 (fl_gamma_simplex_params against every point; no duplicates here)
+ * must be >= c0. Returns how many such faces there were. */
+static size_t check_faces_within_c0(const double *p, size_t n, const fl_reconstruction3 *r)
+{
+    fl_dt3 dt;
+    fl_error err;
+    CHECK_STATUS(fl_dt3_build(p, n, NULL, &dt, &err), FL_OK, &err);
+    uint32_t *faces = malloc(12 * dt.tet_count * sizeof *faces);
+    CHECK(faces != NULL);
+    if (!faces) return 0;
+    for (size_t t = 0; t < dt.tet_count; t++)
+        for (int k = 0; k < 4; k++) sorted_face(dt.tet + 4 * t, k, faces + 12 * t + 3 * k);
+    qsort(faces, 4 * dt.tet_count, 3 * sizeof *faces, cmp_triple);
+    size_t added = 0, below = 0;
+    for (size_t t = 0; t < r->tet_count; t++)
+        for (int k = 0; k < 4; k++) {
+            uint32_t f[3];
+            sorted_face(r->tet + 4 * t, k, f);
+            if (bsearch(f, faces, 4 * dt.tet_count, 3 * sizeof *faces, cmp_triple)) continue;
+            added++;
+            double c0, c1;
+            if (fl_gamma_simplex_params(p, n, 3, f, &c0, &c1) != 1) c1 = -1;
+            CHECK_MSG(c1 < 0, "face %u %u %u is not a Delaunay face but has c1' = %g", f[0], f[1],
+                      f[2], c1);
+            /* c1' is a floating construction whose last bits depend on the vertex order */
+            below += c1 < r->augmented_c0 - 1e-12;
+        }
+    CHECK_MSG(below == 0, "%zu added faces with c1' below augmented_c0 = %.17g", below,
+              r->augmented_c0);
+    if (added) CHECK(!isnan(r->augmented_c0));
+    free(faces);
+    fl_dt3_free(&dt);
+    return added;
+}
+
 /* Runs without and with augmentation; returns the points the plain run left inside. */
 static size_t run_pair(const char *name, const double *p, size_t n, int self_intersections,
                        int require_all)
@@ -92,6 +147,8 @@ static size_t run_pair(const char *name, const double *p, size_t n, int self_int
         /* the first flip replaces two Delaunay tetrahedra, so (points in general position)
          * it adds triangles without an empty ball: c1' < 0 */
         if (b.flip_count) CHECK(b.augmented_c0 >= -1 && b.augmented_c0 < 0);
+        size_t added = check_faces_within_c0(p, n, &b);
+        if (b.flip_count) CHECK(added > 0 || b.removed_count > 0);
         printf("%s n=%zu: plain %zu inside; augmented %zu inside, %zu flips, c0 = %.3f\n", name, n,
                a.points_inside, b.points_inside, b.flip_count, b.augmented_c0);
     }

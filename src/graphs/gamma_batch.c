@@ -1,0 +1,201 @@
+/* The largest empty neighbourhoods (Def. 3.3) of many given simplices against one point set,
+ * each from the points near it instead of all N (fl_gamma_simplices_params).
+ *
+ * fl_gamma_simplex_params scans every point: O(N) a simplex, which made the augmented_c0 report
+ * of 3D constriction O(N) per unlocking flip (docs/reconstruct3d.md). Here the points sit in one
+ * bucket grid and each simplex visits them in rings of cells around the centre of its smallest
+ * ball, nearest first, until every point that could still change its summary has been seen:
+ *  - a point on the + side that would replace the witness `up` lies strictly inside the ball
+ *    B(tau(up)) (the balls through the vertices are nested on each side, gamma_internal.h), and
+ *    B(t) lies within |t| + sqrt(r^2 + t^2) of the centre; the same for `lo` on the - side;
+ *  - a point on H that blocks lies in the closed smallest ball, within r of the centre;
+ *  - while a side has no witness yet, any point there could become one: the scan goes on (to
+ *    the whole grid if that side is empty, as for simplices on the convex hull).
+ * The summary is a function of the set of points added (ties go to the smaller index), so the
+ * result is the brute force's bit for bit; tests/graphs/test_gamma_batch.c compares them.
+ * The floating centre, radius and offsets only decide when to stop; a relative margin of 1e-6
+ * on the radius covers their rounding (as in gamma_triangles.c).
+ *
+ * That prunes only where the witnesses are near. A triangle between points sampled from a
+ * surface, lying nearly in the surface, has its witness balls spanning the whole object
+ * (c1' close to -1) and still costs O(N). fl_gamma_simplices_min_c1 wants only the smallest c1'
+ * (what 3D constriction reports as augmented_c0) and avoids most such scans: once some simplex
+ * has c1' = m < 0, another one matters only if c1' < m, i.e. (Lemma 3.2) if a point lies in the
+ * symmetric lens N_γ(m, m) = B(-T) ∩ B(T), T = r sqrt(g^2 - 1), g = 1/(1 + m), which lies inside
+ * the smallest ball: a point q with d = q - centre and h = d.normal is in it iff
+ * |d|^2 + 2T|h| < r^2. Points farther than r from the centre are never in it, so a box query
+ * decides; only simplices that pass get the exact scan, and the minimum falls only a few times. */
+#include <math.h>
+#include <string.h>
+
+#include "graphs/gamma_internal.h"
+
+/* Distance from the centre within which every point that can change the summary lies. */
+static double needed_radius(const gamma_summary *s, const gamma_frame *f, const double *coords)
+{
+    double need = f->r;
+    for (int side = -1; side <= 1; side += 2) {
+        uint32_t w = side > 0 ? s->up : s->lo;
+        if (w == GAMMA_NONE) return INFINITY;
+        double t = gamma_frame_offset(f, coords + (size_t)f->dim * w, side);
+        if (!isfinite(t)) return INFINITY;
+        need = fmax(need, fabs(t) + hypot(f->r, t));
+    }
+    return need * (1 + 1e-6);
+}
+
+/* Summary of one simplex by rings; 1 found, 0 none empty, -1 out of memory. */
+static int simplex_params(const graph_grid *g, const uint32_t *simplex, fl_vec *ring, double *c0,
+                          double *c1)
+{
+    gamma_frame f;
+    *c0 = *c1 = NAN;
+    if (!gamma_frame_init(&f, g->coords, g->dim, simplex)) return 0;
+    gamma_summary s;
+    gamma_summary_init(&s);
+    for (size_t r = 0;; r++) {
+        int beyond = 0;
+        ring->count = 0;
+        if (graph_grid_ring(g, f.center, r, ring, &beyond) < 0) return -1;
+        if (beyond) break;
+        const uint32_t *items = ring->data;
+        for (size_t i = 0; i < ring->count; i++)
+            gamma_summary_add(&s, &f, g->coords, items[i]);
+        if (s.blocked_all) break; /* final: nothing can unblock it */
+        if ((double)r * g->cell >= needed_radius(&s, &f, g->coords)) break;
+    }
+    gamma_value v;
+    gamma_summary_value(&s, &f, g->coords, &v);
+    if (v.never) return 0;
+    *c0 = v.c0;
+    *c1 = v.c1;
+    return 1;
+}
+
+fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
+                                    const uint32_t *simplices, size_t count, double *c0,
+                                    double *c1, int *found, fl_error *err)
+{
+    if (count && (!simplices || !c0 || !c1))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1,
+                       "fl_gamma_simplices_params: simplices, c0 and c1 must not be NULL");
+    fl_status st = graph_check_points(coords, n, dim, err);
+    if (st != FL_OK) return st;
+    for (size_t i = 0; i < count; i++) {
+        const uint32_t *s = simplices + (size_t)dim * i;
+        for (int a = 0; a < dim; a++) {
+            if (s[a] >= n)
+                return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                               "simplex %zu: index %u out of range (%zu points)", i,
+                               (unsigned)s[a], n);
+            for (int b = 0; b < a; b++)
+                if (s[a] == s[b])
+                    return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                                   "simplex %zu repeats vertex %u", i, (unsigned)s[a]);
+        }
+    }
+    if (count == 0) return FL_OK;
+    graph_grid g;
+    st = graph_grid_build(&g, coords, n, dim, err);
+    if (st != FL_OK) return st;
+    fl_vec ring;
+    fl_vec_init(&ring, sizeof(uint32_t));
+    for (size_t i = 0; i < count && st == FL_OK; i++) {
+        int r = simplex_params(&g, simplices + (size_t)dim * i, &ring, c0 + i, c1 + i);
+        if (r < 0)
+            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1,
+                         "out of memory evaluating γ-neighbourhoods");
+        else if (found)
+            found[i] = r;
+    }
+    fl_vec_free(&ring);
+    graph_grid_free(&g);
+    return st;
+}
+
+/* 1 when no point but the simplex's vertices lies in a lens slightly THICKER than N_γ(-kappa,
+ * -kappa) (T shrunk by 1e-6, r^2 grown by 1e-9: rounding cannot hide a point), so that
+ * c1' > -kappa for certain; 0 when some point may lie in it or the test is not reliable (T
+ * beyond 1e6 r, where rounding of T|h| could exceed the margin); -1 on NOMEM. */
+static int lens_empty(const graph_grid *g, const gamma_frame *f, const uint32_t *simplex,
+                      double kappa, fl_vec *box)
+{
+    double gk = 1 / (1 - kappa), t = f->r * sqrt(gk * gk - 1) * (1 - 1e-6);
+    if (!(kappa > 0 && kappa < 1) || !(t <= 1e6 * f->r) || !(f->r > 0)) return 0;
+    int dim = g->dim;
+    double lo[3], hi[3], reach = f->r * (1 + 1e-6);
+    for (int k = 0; k < dim; k++) lo[k] = f->center[k] - reach, hi[k] = f->center[k] + reach;
+    box->count = 0;
+    if (graph_grid_box(g, lo, hi, box) < 0) return -1;
+    const uint32_t *items = box->data;
+    double r2 = f->r * f->r * (1 + 1e-9);
+    for (size_t i = 0; i < box->count; i++) {
+        uint32_t q = items[i];
+        int own = 0;
+        for (int k = 0; k < dim; k++) own |= simplex[k] == q;
+        if (own) continue;
+        const double *p = g->coords + (size_t)dim * q;
+        double d2 = 0, h = 0;
+        for (int k = 0; k < dim; k++) {
+            double d = p[k] - f->center[k];
+            d2 += d * d;
+            h += d * f->normal[k];
+        }
+        if (d2 + 2 * t * fabs(h) < r2) return 0;
+    }
+    return 1;
+}
+
+fl_status fl_gamma_simplices_min_c1(const double *coords, size_t n, int dim,
+                                    const uint32_t *simplices, size_t count, double *min_c1,
+                                    size_t *argmin, fl_error *err)
+{
+    if (!min_c1 || (count && !simplices))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1,
+                       "fl_gamma_simplices_min_c1: simplices and min_c1 must not be NULL");
+    *min_c1 = NAN;
+    if (argmin) *argmin = count;
+    double c0 = NAN, c1 = NAN;
+    fl_status st = fl_gamma_simplices_params(coords, n, dim, simplices, 0, &c0, &c1, NULL, err);
+    if (st != FL_OK) return st; /* the point checks */
+    for (size_t i = 0; i < count; i++) {
+        const uint32_t *s = simplices + (size_t)dim * i;
+        for (int a = 0; a < dim; a++) {
+            int bad = s[a] >= n;
+            for (int b = 0; b < a; b++) bad |= s[a] == s[b];
+            if (bad)
+                return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                               "simplex %zu: index out of range or repeated vertex", i);
+        }
+    }
+    if (count == 0) return FL_OK;
+    graph_grid g;
+    st = graph_grid_build(&g, coords, n, dim, err);
+    if (st != FL_OK) return st;
+    fl_vec ring;
+    fl_vec_init(&ring, sizeof(uint32_t));
+    double m = NAN;
+    size_t at = count;
+    for (size_t i = 0; i < count && st == FL_OK && !(m <= -1); i++) {
+        const uint32_t *s = simplices + (size_t)dim * i;
+        gamma_frame f;
+        int r = 0;
+        if (gamma_frame_init(&f, g.coords, dim, s) && m < 0) {
+            r = lens_empty(&g, &f, s, -m, &ring);
+            if (r > 0) continue; /* c1' > m: not the minimum */
+        }
+        if (r < 0 || (r = simplex_params(&g, s, &ring, &c0, &c1)) < 0) {
+            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory evaluating γ-neighbourhoods");
+            break;
+        }
+        if (r == 0) c1 = -1; /* no empty neighbourhood: the end of the range */
+        if (isnan(m) || c1 < m) m = c1, at = i;
+    }
+    fl_vec_free(&ring);
+    graph_grid_free(&g);
+    if (st == FL_OK) {
+        *min_c1 = m;
+        if (argmin) *argmin = at;
+    }
+    return st;
+}

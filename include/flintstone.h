@@ -1611,6 +1611,9 @@ typedef struct fl_hal3 {
     uint32_t *ties;        /* 2 per tie: node indices */
     uint32_t depth;        /* deepest level: the approximation at this level is the mesh */
     double ball[4];        /* the level-0 ball through v_i, v_j, v_k containing every vertex */
+    double box[6];         /* axis-aligned bounding box of the used vertices, exact: min x, y,
+                              z, then max x, y, z (fl_hal3_intersect answers "apart" at once
+                              when the two boxes are disjoint) */
 } fl_hal3;
 
 /* Options; all zero is the default. */
@@ -1677,7 +1680,8 @@ void fl_hal3_pairs_free(fl_hal3_pairs *pairs);
 
 /* Hierarchical intersection (§7.4, the ∩/∪ cases): every pair of closed triangles, one of a and
  * one of b, with a common point (decided exactly), sorted. first_only != 0 stops at the first
- * pair. Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
+ * pair. Trees whose bounding boxes (hal->box) are disjoint give no pair without a descent.
+ * Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
 fl_status fl_hal3_intersect(const fl_hal3 *a, const fl_hal3 *b, int first_only,
                             fl_hal3_pairs *out, fl_error *err);
 

@@ -1587,11 +1587,12 @@ fl_status fl_g1_read_bez(const char *path, fl_g1_surface *out, fl_error *err);
  * the surface it stands for, bounded by three edge paths between its corners. A node is refined
  * (Algorithm 7.2, level by level) by a three-split at an interior vertex v_q of its part, or by
  * splits at one, two or three sides at a vertex of the side's path when angles are below the
- * threshold; the neighbour across a split side splits at the same vertex, so the levels are
- * crack-free except where shortest paths coalesce (a few edges; docs/hal.md "Known limits"):
- * level 0 and the deepest level are closed manifolds. Pieces left without triangles by
- * coalescing paths stay as nodes with face_count 0 (empty flintstone) so their neighbours' sides
- * stay matched. The leaves are the original triangles. A node's flintstone
+ * threshold; the neighbour across a split side splits at the same vertex. Where shortest paths
+ * coalesce the tree's own levels can leave a few sides unmatched; the approximation functions
+ * close every cut they return (docs/hal.md "Approximations are closed"), so every level and
+ * every adaptive approximation is a closed, oriented, manifold mesh. Pieces left without
+ * triangles by coalescing paths stay as nodes with face_count 0 (empty flintstone) so their
+ * neighbours' sides stay matched. The leaves are the original triangles. A node's flintstone
  * (Def. 7.5) is built from the balls through its corners and v_q / v_r, stored in floating point
  * enlarged so that it provably contains every original triangle of its subtree. */
 
@@ -1626,8 +1627,8 @@ typedef struct fl_hal3_node {
 } fl_hal3_node;
 
 /* A flintstone tree: a copy of the mesh, nodes (the two roots are nodes 0 and 1), and the
- * "ties" of crack-free refinement: pairs of nodes of one level sharing a side that is split
- * when they are refined (an adaptive approximation refines both or neither). */
+ * "ties" of Algorithm 7.2: pairs of nodes of one level sharing a side that both split at the
+ * same vertex when they are refined (recorded; the approximations close cracks instead). */
 typedef struct fl_hal3 {
     fl_mesh mesh;
     size_t node_count;
@@ -1636,6 +1637,9 @@ typedef struct fl_hal3 {
     uint32_t *ties;        /* 2 per tie: node indices */
     uint32_t depth;        /* deepest level: the approximation at this level is the mesh */
     double ball[4];        /* the level-0 ball through v_i, v_j, v_k containing every vertex */
+    double box[6];         /* axis-aligned bounding box of the used vertices, exact: min x, y,
+                              z, then max x, y, z (fl_hal3_intersect answers "apart" at once
+                              when the two boxes are disjoint) */
 } fl_hal3;
 
 /* Options; all zero is the default. */
@@ -1664,14 +1668,17 @@ int fl_hal3_flintstone_may_contain(const fl_hal3 *hal, uint32_t node, const doub
 
 /* The level-`level` approximation: the triangles of the nodes of that level and of the leaves
  * above it, on the used vertices (coordinates copied, vertices renumbered in order of first
- * use); crack-free up to the limit above. level >= hal->depth gives the original triangles.
+ * use), closed: where that cut has an unmatched or over-used side, the nodes there are refined
+ * and crack loops are filled with triangles on their own vertices, so the result is a closed,
+ * oriented, manifold mesh. level >= hal->depth gives the original triangles.
  * *error (may be NULL) receives the largest node error of the cut (0 at the finest level). Free
  * with fl_mesh_free. Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
 fl_status fl_hal3_approximate_level(const fl_hal3 *hal, uint32_t level, fl_mesh *out,
                                     double *error, fl_error *err);
 
 /* The adaptive approximation (§7.3.3): nodes are refined while their error exceeds max_error,
- * and a node is also refined when a tie partner is (so no split side opens a crack); max_error
+ * then the cut is closed as in fl_hal3_approximate_level (a closed, oriented, manifold mesh;
+ * the ties are not propagated, see docs/hal.md "Approximations are closed"); max_error
  * 0 refines every node and gives the mesh itself. *error and *level (each may be NULL) receive
  * the certified error (<= max_error: every point of the surface is within it of the
  * approximation) and the deepest level used. Errors: FL_ERR_USAGE for a negative or NaN
@@ -1702,7 +1709,8 @@ void fl_hal3_pairs_free(fl_hal3_pairs *pairs);
 
 /* Hierarchical intersection (§7.4, the ∩/∪ cases): every pair of closed triangles, one of a and
  * one of b, with a common point (decided exactly), sorted. first_only != 0 stops at the first
- * pair. Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
+ * pair. Trees whose bounding boxes (hal->box) are disjoint give no pair without a descent.
+ * Errors: FL_ERR_USAGE, FL_ERR_NOMEM. */
 fl_status fl_hal3_intersect(const fl_hal3 *a, const fl_hal3 *b, int first_only,
                             fl_hal3_pairs *out, fl_error *err);
 

@@ -12,18 +12,33 @@
 # ours with both trees' build. Then the approximation error per triangle count against
 # meshoptimizer's QEM simplifier (bench/peers/hal3_qem.cpp), measured with fl_hausdorff_meshes.
 #
-# Environment besides lib.sh's: HAL3_QUERIES, HAL3_REPS (default 3), HAL3_BRUTE.
+# Last, an INFO line a mesh: every level and the adaptive approximations at R/2 .. R/64 checked
+# closed, oriented and manifold with fl_mesh_check (eval_hal3 closed; crack-freeness).
+#
+# Environment besides lib.sh's: HAL3_QUERIES, HAL3_REPS (default 3), HAL3_BRUTE, HAL3_PARTS
+# (default "inside intersect error closed": which parts to run).
 set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 NQ=${HAL3_QUERIES:-1000000}
 REPS=${HAL3_REPS:-3}
 NB=${HAL3_BRUTE:-2000}
+PARTS=${HAL3_PARTS:-inside intersect error closed}
+part() { [[ " $PARTS " == *" $1 "* ]]; }
 
 one_mesh() { # NAME FILE NOTES
   local name=$1 file=$2 notes=$3 prefix=$BENCH_DATA/hal3-$1 o p ob pb line diff brute other
   [ -e "$file" ] || { echo "ERROR|hal3_inside_$name|$file missing (bench/get-data.sh)"; return 0; }
   "$BENCH_BIN/eval_hal3" prepare "$file" "$prefix" "$NQ" >/dev/null ||
     { echo "ERROR|hal3_inside_$name|prepare failed"; return 0; }
+  if part closed; then
+    line=$("$BENCH_BIN/eval_hal3" closed "$prefix" | grep '^CLOSED') ||
+      { echo "ERROR|hal3_closed_$name|eval_hal3 closed failed"; return 0; }
+    printf 'INFO|hal3_closed_%s|-|%s; levels closed %s of %s, adaptive approximations (R/2 .. R/64) closed with error <= bound %s of %s, worst unmatched/non-manifold/misoriented edges %s, finest level = input %s\n' \
+      "$name" "$notes" "$(field levels_closed "$line")" "$(field levels "$line")" \
+      "$(field bounds_closed "$line")" "$(field bounds "$line")" \
+      "$(field worst_bad_edges "$line")" "$(field finest_is_input "$line")"
+  fi
+  part inside || { intersect_rows "$name" "$prefix" "$notes"; return 0; }
   o="" p="" ob="" pb=""
   for ((r = 0; r < BENCH_ROUNDS; r++)); do
     line=$("$BENCH_BIN/eval_hal3" inside "$prefix" "$REPS" | grep '^RESULT') ||
@@ -44,6 +59,12 @@ one_mesh() { # NAME FILE NOTES
     "$name" "$o" "$p" "$notes" "$NQ" "$inside" "$(field differ "$diff")" \
     "$NB" "$(field diff0 "$brute")" "$(field diff1 "$brute")" "$(median <<<"${ob%$'\n'}")" \
     "$nodes" "$(median <<<"${pb%$'\n'}")"
+  intersect_rows "$name" "$prefix" "$notes"
+}
+
+intersect_rows() { # NAME PREFIX NOTES
+  local name=$1 prefix=$2 notes=$3 o p ob line other
+  part intersect || return 0
   for other in near far; do
     o="" p="" ob=""
     local io ip all
@@ -82,7 +103,7 @@ one_mesh bunny "$BENCH_CACHE/real/bunny.off" "npm bunny (3 674 triangles)"
 one_mesh cow "$BENCH_CACHE/cgal/data/meshes/cow.off" "libcgal-demo cow.off (5 804 triangles)"
 one_mesh bull "$BENCH_CACHE/cgal/data/meshes/bull.off" "libcgal-demo bull.off (12 396 triangles)"
 one_mesh camel "$BENCH_CACHE/cgal/data/meshes/camel.off" "libcgal-demo camel.off (19 536 triangles)"
-if [ -x "$BENCH_BIN/hal3_qem" ]; then
+if part error && [ -x "$BENCH_BIN/hal3_qem" ]; then
   qem bunny "$BENCH_CACHE/real/bunny.off"
   qem cow "$BENCH_CACHE/cgal/data/meshes/cow.off"
 fi

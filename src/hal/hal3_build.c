@@ -608,6 +608,22 @@ static fl_status copy_mesh(const fl_mesh *in, fl_mesh *out, fl_error *err)
     return FL_OK;
 }
 
+/* The exact bounding box of the vertices the triangles use (min and max are exact on doubles;
+ * the input is finite, checked before). Every triangle lies in it (a box is convex), so two
+ * trees with disjoint boxes have no common point: fl_hal3_intersect's early exit. */
+static void bounding_box(const fl_mesh *m, double box[6])
+{
+    for (int k = 0; k < 3; k++)
+        box[k] = INFINITY, box[3 + k] = -INFINITY;
+    for (size_t t = 0; t < 3 * m->triangle_count; t++) {
+        const double *p = m->xyz + 3 * (size_t)m->tri[t];
+        for (int k = 0; k < 3; k++) {
+            if (p[k] < box[k]) box[k] = p[k];
+            if (p[k] > box[3 + k]) box[3 + k] = p[k];
+        }
+    }
+}
+
 static fl_status levels(build *b, const fl_hal3_options *opt, fl_hal3 *out, fl_error *err)
 {
     fl_status st = FL_OK;
@@ -685,6 +701,7 @@ fl_status fl_hal3_build(const fl_mesh *mesh, const fl_hal3_options *opt, fl_hal3
         for (size_t t = 0; t < 3 * mesh->triangle_count; t++)
             out->ball[3] =
                 fmax(out->ball[3], fl_hal3_d2(out->ball, out->mesh.xyz + 3 * (size_t)mesh->tri[t]));
+        bounding_box(&out->mesh, out->box);
         st = levels(&b, opt, out, err);
     }
     for (size_t i = 0; i < b.ncur; i++)

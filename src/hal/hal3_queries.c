@@ -90,6 +90,11 @@ fl_status fl_hal3_intersect(const fl_hal3 *a, const fl_hal3 *b, int first_only, 
     memset(out, 0, sizeof *out);
     if (!a || !b || !a->node_count || !b->node_count)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hal3_intersect: NULL or empty tree");
+    /* Early exit: disjoint bounding boxes (exact comparisons of the stored extremes; every
+     * triangle lies in its mesh's box) share no point, and this answers far-apart meshes in
+     * O(1) instead of descending until the root flintstones separate. */
+    for (int k = 0; k < 3; k++)
+        if (a->box[3 + k] < b->box[k] || b->box[3 + k] < a->box[k]) return FL_OK;
     fl_vec stack, res;
     fl_vec_init(&stack, 2 * sizeof(uint32_t));
     fl_vec_init(&res, 2 * sizeof(uint32_t));

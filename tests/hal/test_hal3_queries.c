@@ -147,6 +147,37 @@ static void test_hal3_intersecting_pairs_equal_brute_force(void)
     fl_mesh_free(&d);
 }
 
+/* The early exit of fl_hal3_intersect (disjoint bounding boxes) must be exact: hal->box equals
+ * the vertices' extremes, and a copy of the cube moved along each axis, in each direction, by
+ * exactly its extent (the faces touch: pairs) or by one ulp more (boxes apart by one ulp: no
+ * pair) gives the brute-force pairs in both argument orders. */
+static void test_hal3_intersect_box_early_exit_is_exact(void)
+{
+    fl_mesh c = hal3_cube(2);
+    fl_hal3 hc;
+    fl_error err;
+    CHECK_STATUS(fl_hal3_build(&c, NULL, &hc, &err), FL_OK, &err);
+    for (int k = 0; k < 3; k++) {
+        double lo = INFINITY, hi = -INFINITY;
+        for (size_t v = 0; v < c.vertex_count; v++)
+            lo = fmin(lo, c.xyz[3 * v + k]), hi = fmax(hi, c.xyz[3 * v + k]);
+        CHECK(hc.box[k] == lo && hc.box[3 + k] == hi);
+    }
+    fl_hal3_free(&hc);
+    for (int k = 0; k < 3; k++)
+        for (int sign = -1; sign <= 1; sign += 2)
+            for (int ulp = 0; ulp < 2; ulp++) {
+                fl_mesh d = hal3_cube(2);
+                double shift = ulp ? nextafter(2.0, 3.0) : 2.0;
+                for (size_t v = 0; v < d.vertex_count; v++)
+                    d.xyz[3 * v + (size_t)k] += sign * shift;
+                check_intersection(&c, &d, !ulp);
+                check_intersection(&d, &c, !ulp);
+                fl_mesh_free(&d);
+            }
+    fl_mesh_free(&c);
+}
+
 static void test_hal3_contains_rejects_non_finite_queries(void)
 {
     fl_mesh m = hal3_icosphere(1);
@@ -258,6 +289,7 @@ int main(void)
     static const fl_test_case cases[] = {
         FL_TEST_CASE(test_hal3_inclusion_equals_brute_force_on_random_and_surface_points),
         FL_TEST_CASE(test_hal3_intersecting_pairs_equal_brute_force),
+        FL_TEST_CASE(test_hal3_intersect_box_early_exit_is_exact),
         FL_TEST_CASE(test_hal3_contains_rejects_non_finite_queries),
         FL_TEST_CASE(test_hal3_inclusion_rays_along_every_axis_through_vertices_and_edges),
         FL_TEST_CASE(test_hal3_inclusion_far_from_the_origin_equals_brute_force),

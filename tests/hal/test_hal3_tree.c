@@ -94,9 +94,10 @@ static void check_closed(const fl_mesh *ap, const char *what, const char *name, 
     fl_mesh_report_free(&r);
 }
 
-/* Every level is a closed, oriented manifold (thesis §7.3: the approximations are crack-free);
- * level 0 is the two triangles v_i v_j v_k and the deepest level the input. */
-static void test_hal3_every_level_is_a_closed_manifold(void)
+/* Every level and every adaptive approximation is a closed, oriented manifold (thesis §7.3: the
+ * approximations are crack-free; zero boundary, non-manifold and misoriented edges); level 0 is
+ * the two triangles v_i v_j v_k and the deepest level the input. */
+static void test_hal3_every_level_and_adaptive_cut_is_a_closed_manifold(void)
 {
     for (int i = 0; i < N_MESHES; i++) {
         fl_mesh m = test_mesh(i);
@@ -116,6 +117,19 @@ static void test_hal3_every_level_is_a_closed_manifold(void)
             fl_mesh_free(&ap);
         }
         CHECK_EQ_INT(last, m.triangle_count);
+        /* Adaptive cuts at 16 bounds from 2 R down to R / 2^13 (each a different set of
+         * nodes): closed too, and certified within the bound. */
+        double R = sqrt(hal.ball[3]);
+        for (int k = -1; k <= 13; k++) {
+            fl_mesh ap;
+            fl_error err;
+            double bound = ldexp(R, -k), e = -1;
+            CHECK_STATUS(fl_hal3_approximate_error(&hal, bound, &ap, &e, NULL, &err), FL_OK,
+                         &err);
+            check_closed(&ap, "bound 2^-k R, k", mesh_name[i], k);
+            CHECK_MSG(e <= bound, "%s: error %g above bound %g", mesh_name[i], e, bound);
+            fl_mesh_free(&ap);
+        }
         fl_hal3_free(&hal);
         fl_mesh_free(&m);
     }
@@ -299,7 +313,7 @@ int main(void)
 {
     static const fl_test_case cases[] = {
         FL_TEST_CASE(test_hal3_leaves_are_the_original_triangles_once),
-        FL_TEST_CASE(test_hal3_every_level_is_a_closed_manifold),
+        FL_TEST_CASE(test_hal3_every_level_and_adaptive_cut_is_a_closed_manifold),
         FL_TEST_CASE(test_hal3_every_flintstone_contains_its_subtree_triangles),
         FL_TEST_CASE(test_hal3_adaptive_approximation_is_within_its_certified_error),
         FL_TEST_CASE(test_hal3_rejects_surfaces_that_are_not_sphere_like),

@@ -82,27 +82,54 @@ fl_status hd_measure(hd_run *run, hd_dir *dir, const double *p, uint32_t *index,
     return FL_OK;
 }
 
-/* Whether every corner's closest point lies on element e of B, up to tau (bound (2)). */
-static int all_on_element(const hd_dir *dir, const hd_sample *const *c, uint32_t e, double tau)
+/* Distance from p to element e of B (triangle, or segment for polylines), as computed; the
+ * computed closest point is within tau of the element (same rounding as the sweep's own). */
+static double element_distance(const hd_dir *dir, const double *p, uint32_t e)
 {
     const uint32_t *v = dir->b_idx + (size_t)dir->k * e;
-    for (int i = 0; i < dir->k; i++) {
-        double bary[3], q[3], d2;
-        if (dir->k == 3)
-            d2 = fl_sweep_triangle_closest(c[i]->c, dir->b_xyz + 3 * (size_t)v[0],
-                                           dir->b_xyz + 3 * (size_t)v[1],
-                                           dir->b_xyz + 3 * (size_t)v[2], bary, q);
-        else
-            d2 = fl_sweep_segment_closest(c[i]->c, dir->b_xyz + 3 * (size_t)v[0],
-                                          dir->b_xyz + 3 * (size_t)v[1], bary, q);
-        if (!(d2 <= tau * tau)) return 0;
-    }
-    return 1;
+    double bary[3], q[3], d2;
+    if (dir->k == 3)
+        d2 = fl_sweep_triangle_closest(p, dir->b_xyz + 3 * (size_t)v[0],
+                                       dir->b_xyz + 3 * (size_t)v[1],
+                                       dir->b_xyz + 3 * (size_t)v[2], bary, q);
+    else
+        d2 = fl_sweep_segment_closest(p, dir->b_xyz + 3 * (size_t)v[0],
+                                      dir->b_xyz + 3 * (size_t)v[1], bary, q);
+    return sqrt(d2);
 }
 
-static double same_element_bound(const hd_run *run, double maxd, double tau)
+/* Bound (3), the fixed-element bound: for one element t of B, d(x, B) <= d(x, t), and
+ * x -> d(x, t) is convex (the distance to a convex set), so over the simplex its maximum is
+ * at a corner: max_{x in s} d(x, B) <= max_i d(p_i, t). Every element t gives a valid bound;
+ * this is the smallest over `cand` (n candidates), stopping a candidate as soon as one corner
+ * exceeds `best` (the bound to beat). Returns the largest computed corner distance of the best
+ * candidate, or INFINITY when none beats `best`. Rounding (added by the caller): the computed
+ * closest point q is within tau of t, and |p - q| is computed to a few ulps. This contains
+ * bound (2): when every c_i lies on t, d(p_i, t) <= d_i. */
+static double fixed_element_bound(const hd_dir *dir, const hd_sample *const *c,
+                                  const uint32_t *cand, int n, double best)
 {
-    return (maxd + tau) * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
+    double found = INFINITY;
+    for (int j = 0; j < n; j++) {
+        uint32_t e = cand[j];
+        int seen = e == FL_SWEEP_NONE;
+        for (int i = 0; i < j && !seen; i++)
+            seen = cand[i] == e;
+        if (seen) continue;
+        double m = 0;
+        for (int i = 0; i < dir->k && m < best; i++)
+            m = fmax(m, element_distance(dir, c[i]->p, e));
+        if (m < best) best = found = m;
+    }
+    return found;
+}
+
+/* A bound from a computed corner distance m to one element: tau for the rounded closest point,
+ * 8 ulps relative for |p - q| and its square root, 128 ulps of the coordinates absolute (the
+ * corners are themselves rounded midpoints). */
+static double element_bound(const hd_run *run, double m, double tau)
+{
+    return (m + tau) * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
 }
 
 static double max_corner_distance(const hd_dir *dir, const hd_simplex *s, const hd_sample **c)
@@ -119,7 +146,8 @@ static double max_corner_distance(const hd_dir *dir, const hd_simplex *s, const 
 fl_status hd_try_centroid_element(hd_run *run, hd_dir *dir, hd_simplex *s, fl_error *err)
 {
     const hd_sample *c[3];
-    double maxd = max_corner_distance(dir, s, c), y[3] = {0, 0, 0};
+    double y[3] = {0, 0, 0};
+    max_corner_distance(dir, s, c);
     for (int i = 0; i < dir->k; i++)
         for (int x = 0; x < 3; x++)
             y[x] += c[i]->c[x] / dir->k;
@@ -129,8 +157,8 @@ fl_status hd_try_centroid_element(hd_run *run, hd_dir *dir, hd_simplex *s, fl_er
     if (st) return st;
     run->samples++;
     double tau = 256 * HD_ULP * run->scale;
-    if (all_on_element(dir, c, r.element, tau))
-        s->upper = fmin(s->upper, same_element_bound(run, maxd, tau));
+    double m = fixed_element_bound(dir, c, &r.element, 1, INFINITY);
+    if (m < INFINITY) s->upper = fmin(s->upper, element_bound(run, m, tau));
     return FL_OK;
 }
 
@@ -173,15 +201,6 @@ double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *
 {
     const hd_sample *c[3];
     double maxd = max_corner_distance(dir, s, c), mag = 0, kmax = 0;
-    /* (2): the closest points share an element (an edge or vertex of B lies on several, so
-     * every corner's element is tried). c_i is a rounded point of B: it is within tau of the
-     * element it was computed on, and tau is added to the bound. */
-    double tau = 256 * HD_ULP * run->scale;
-    for (int i = 0; i < dir->k; i++) {
-        uint32_t e = c[i]->elem;
-        if (e != FL_SWEEP_NONE && all_on_element(dir, c, e, tau))
-            return same_element_bound(run, maxd, tau);
-    }
     for (int i = 0; i < dir->k; i++)
         for (int j = i + 1; j < dir->k; j++) {
             double cc = 0, e2 = 0;
@@ -198,7 +217,14 @@ double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *
         a[i] = c[i]->d * c[i]->d;
     double mu, u2 = mean_square_bound(a, dir->k, kmax, &mu);
     u2 += 32 * HD_ULP * (maxd * maxd + mag + fabs(mu) + kmax);
-    return sqrt(u2) * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
+    double u1 = sqrt(u2);
+    /* (3) with the corners' own elements (an edge or vertex of B lies on several elements, so
+     * every corner's is tried); it only replaces (1) where it is smaller after its slack. */
+    double tau = 256 * HD_ULP * run->scale;
+    uint32_t cand[3] = {c[0]->elem, c[1]->elem, dir->k == 3 ? c[2]->elem : FL_SWEEP_NONE};
+    double m = fixed_element_bound(dir, c, cand, dir->k, u1 - tau);
+    if (m < INFINITY) return element_bound(run, m, tau);
+    return u1 * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
 }
 
 /* ---- a max-heap of simplices by bound, for the refinement of one simplex of A ---- */

@@ -30,6 +30,52 @@ static void dir_free(hd_dir *d)
     fl_vec_free(&d->leaves);
     free(d->used);
     free(d->simplices);
+    free(d->b_adj);
+}
+
+/* One side of an element for the adjacency: an edge (triangles) or an end (segments). */
+typedef struct hd_side {
+    uint32_t lo, hi, elem, slot;
+} hd_side;
+
+static int side_cmp(const void *x, const void *y)
+{
+    const hd_side *a = x, *b = y;
+    if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
+    if (a->hi != b->hi) return a->hi < b->hi ? -1 : 1;
+    return (a->elem > b->elem) - (a->elem < b->elem);
+}
+
+/* Elements sharing a side are neighbours; where more than two share one (non-manifold), each
+ * gets the next in the sorted run, cyclically. Only a heuristic for candidate elements. */
+fl_status hd_adjacency(hd_dir *dir, const uint32_t *idx, size_t ns, fl_error *err)
+{
+    size_t k = (size_t)dir->k, n = ns * k;
+    hd_side *sd = fl_alloc_array(n, sizeof *sd);
+    dir->b_adj = fl_alloc_array(n, sizeof *dir->b_adj);
+    if (!sd || !dir->b_adj) {
+        free(sd);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    }
+    for (size_t e = 0; e < ns; e++)
+        for (size_t i = 0; i < k; i++) {
+            uint32_t a = idx[k * e + i], b = k == 3 ? idx[k * e + (i + 1) % 3] : a;
+            hd_side s = {a < b ? a : b, a < b ? b : a, (uint32_t)e, (uint32_t)i};
+            sd[k * e + i] = s;
+            dir->b_adj[k * e + i] = FL_SWEEP_NONE;
+        }
+    qsort(sd, n, sizeof *sd, side_cmp);
+    for (size_t i = 0, j; i < n; i = j) {
+        for (j = i + 1; j < n && sd[j].lo == sd[i].lo && sd[j].hi == sd[i].hi;)
+            j++;
+        if (j - i < 2) continue;
+        for (size_t m = i; m < j; m++) {
+            const hd_side *o = sd + (m + 1 < j ? m + 1 : i);
+            dir->b_adj[k * sd[m].elem + sd[m].slot] = o->elem;
+        }
+    }
+    free(sd);
+    return FL_OK;
 }
 
 /* The vertex pass of one direction: A's used vertices as samples, then A's simplices with
@@ -50,6 +96,8 @@ static fl_status dir_init(hd_run *run, hd_dir *d, const hd_shape *a, const hd_sh
     if (st) return st;
     if (!d->used || !d->simplices || fl_vec_reserve(&d->samples, a->nv))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    st = hd_adjacency(d, bshape->idx, bshape->ns, err);
+    if (st) return st;
     for (size_t t = 0; t < a->ns * (size_t)a->k; t++)
         d->used[a->idx[t]] = 1;
     for (size_t v = 0; st == FL_OK && v < a->nv; v++) {
@@ -58,7 +106,7 @@ static fl_status dir_init(hd_run *run, hd_dir *d, const hd_shape *a, const hd_sh
             st = hd_measure(run, d, a->xyz + 3 * v, &index, err);
         } else {
             /* Not a sample: keeps its position so that a kept field can measure it. */
-            hd_sample none = {{0, 0, 0}, {0, 0, 0}, 0, FL_SWEEP_NONE};
+            hd_sample none = {{0, 0, 0}, {0, 0, 0}, 0, FL_SWEEP_NONE, 0};
             memcpy(none.p, a->xyz + 3 * v, sizeof none.p);
             fl_vec_push(&d->samples, &none, 1); /* reserved above */
         }

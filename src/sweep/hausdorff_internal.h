@@ -17,6 +17,8 @@ typedef struct hd_sample {
     double p[3], c[3];
     double d;
     uint32_t elem;
+    uint32_t exact; /* 1: c is B's closest point (a cursor query); 0: c is only some point of
+                     * B (the nearest on a few candidate elements), so d >= d(p, B) */
 } hd_sample;
 
 /* A simplex of the refinement of A: corners are sample indices (k = 3 for triangles, 2 for
@@ -51,7 +53,9 @@ typedef struct hd_dir {
     int dim;                 /* query dimension of the cursor: 2 or 3 */
     fl_sweep_cursor *cursor; /* on B */
     const double *b_xyz;     /* B's vertices (3D) and simplices (k indices each), for the */
-    const uint32_t *b_idx;   /* same-element bound */
+    const uint32_t *b_idx;   /* fixed-element bound */
+    uint32_t *b_adj;         /* k neighbours of each element of B across its edges (triangles)
+                              * or ends (segments), FL_SWEEP_NONE where none: candidates */
     fl_vec samples;          /* hd_sample; the first ones are A's vertices */
     uint32_t *used;          /* 1 for vertices of A used by a simplex */
     hd_simplex *simplices;   /* A's own simplices, with their initial bounds */
@@ -64,6 +68,9 @@ typedef struct hd_dir {
 
 /* Monotonic clock in seconds. */
 double hd_now(void);
+
+/* Builds dir->b_adj for B's k-corner elements (ns of them, indices idx). */
+fl_status hd_adjacency(hd_dir *dir, const uint32_t *idx, size_t ns, fl_error *err);
 
 /* Measures the sample at p (3 doubles) with the cursor and appends it; updates dir->lower.
  * Returns its index through *index. */

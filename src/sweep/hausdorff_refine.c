@@ -68,6 +68,7 @@ fl_status hd_measure(hd_run *run, hd_dir *dir, const double *p, uint32_t *index,
     if (dir->dim == 2) smp.p[2] = smp.c[2] = 0;
     smp.d = sqrt(dist2(smp.p, smp.c));
     smp.elem = r.element;
+    smp.exact = 1;
     if (fl_vec_push(&dir->samples, &smp, 1))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     *index = (uint32_t)(dir->samples.count - 1);
@@ -84,10 +85,10 @@ fl_status hd_measure(hd_run *run, hd_dir *dir, const double *p, uint32_t *index,
 
 /* Distance from p to element e of B (triangle, or segment for polylines), as computed; the
  * computed closest point is within tau of the element (same rounding as the sweep's own). */
-static double element_distance(const hd_dir *dir, const double *p, uint32_t e)
+static double element_closest(const hd_dir *dir, const double *p, uint32_t e, double *q)
 {
     const uint32_t *v = dir->b_idx + (size_t)dir->k * e;
-    double bary[3], q[3], d2;
+    double bary[3], d2;
     if (dir->k == 3)
         d2 = fl_sweep_triangle_closest(p, dir->b_xyz + 3 * (size_t)v[0],
                                        dir->b_xyz + 3 * (size_t)v[1],
@@ -96,6 +97,12 @@ static double element_distance(const hd_dir *dir, const double *p, uint32_t e)
         d2 = fl_sweep_segment_closest(p, dir->b_xyz + 3 * (size_t)v[0],
                                       dir->b_xyz + 3 * (size_t)v[1], bary, q);
     return sqrt(d2);
+}
+
+static double element_distance(const hd_dir *dir, const double *p, uint32_t e)
+{
+    double q[3];
+    return element_closest(dir, p, e, q);
 }
 
 /* Bound (3), the fixed-element bound: for one element t of B, d(x, B) <= d(x, t), and
@@ -316,6 +323,52 @@ static double longest_edge(const hd_dir *dir, const hd_simplex *s, int *ei)
     return best;
 }
 
+/* The sample at the midpoint `mid` of corners a and b. A cursor query costs dozens of distance
+ * evaluations; the elements of a and b and their neighbours across edges usually hold the
+ * closest point too. When the nearest point q on those candidates is already no farther than
+ * the direction's lower bound, the exact distance (<= |mid - q|) cannot raise the lower bound,
+ * so q is kept as an inexact sample: a point of B, which is all bounds (1) and (3) need (their
+ * proofs use c_i in B and the elements as candidates, never that c_i is the closest). Inexact
+ * samples never touch the lower bound. The field (keep_field) wants exact distances. */
+static fl_status measure_midpoint(refine *rf, const double *mid, uint32_t a, uint32_t b,
+                                  uint32_t *m, fl_error *err)
+{
+    hd_dir *dir = rf->dir;
+    const hd_sample *smp = dir->samples.data;
+    if (rf->run->keep_field || dir->samples.count >= UINT32_MAX || !dir->b_adj)
+        return hd_measure(rf->run, dir, mid, m, err);
+    uint32_t cand[2 * 4];
+    int n = 0, k = dir->k;
+    uint32_t ends[2] = {smp[a].elem, smp[b].elem};
+    for (int j = 0; j < 2; j++) {
+        if (ends[j] == FL_SWEEP_NONE) continue;
+        cand[n++] = ends[j];
+        for (int i = 0; i < k; i++)
+            cand[n++] = dir->b_adj[(size_t)k * ends[j] + (size_t)i];
+    }
+    hd_sample best = {{mid[0], mid[1], mid[2]}, {0, 0, 0}, INFINITY, FL_SWEEP_NONE, 0};
+    for (int j = 0; j < n; j++) {
+        int seen = cand[j] == FL_SWEEP_NONE;
+        for (int i = 0; i < j && !seen; i++)
+            seen = cand[i] == cand[j];
+        if (seen) continue;
+        double q[3], d = element_closest(dir, mid, cand[j], q);
+        if (d < best.d) {
+            best.d = d;
+            best.elem = cand[j];
+            memcpy(best.c, q, sizeof q);
+        }
+    }
+    if (!(best.d <= dir->lower)) return hd_measure(rf->run, dir, mid, m, err);
+    if (dir->dim == 2) best.p[2] = best.c[2] = 0;
+    best.d = sqrt(dist2(best.p, best.c));
+    if (fl_vec_push(&dir->samples, &best, 1))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    *m = (uint32_t)(dir->samples.count - 1);
+    rf->run->samples++;
+    return FL_OK;
+}
+
 static fl_status split(refine *rf, const hd_simplex *s, int ei, fl_error *err)
 {
     hd_dir *dir = rf->dir;
@@ -325,7 +378,7 @@ static fl_status split(refine *rf, const hd_simplex *s, int ei, fl_error *err)
     double mid[3];
     for (int x = 0; x < 3; x++)
         mid[x] = 0.5 * (smp[a].p[x] + smp[b].p[x]);
-    fl_status st = hd_measure(rf->run, dir, mid, &m, err);
+    fl_status st = measure_midpoint(rf, mid, a, b, &m, err);
     if (st) return st;
     hd_simplex c0 = *s, c1 = *s;
     c0.tried = c1.tried = 1; /* only A's own simplices try it: a split's corners are new */

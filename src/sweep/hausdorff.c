@@ -121,7 +121,7 @@ static fl_status dir_init(hd_run *run, hd_dir *d, const hd_shape *a, const hd_sh
         s->tried = 0;
         for (int i = 0; i < a->k; i++)
             s->v[i] = a->idx[(size_t)a->k * t + (size_t)i];
-        s->upper = hd_simplex_bound(run, d, s);
+        s->upper = hd_simplex_bound(run, d, s, 0);
     }
     return st;
 }

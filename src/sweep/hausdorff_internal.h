@@ -76,8 +76,9 @@ fl_status hd_adjacency(hd_dir *dir, const uint32_t *idx, size_t ns, fl_error *er
  * Returns its index through *index. */
 fl_status hd_measure(hd_run *run, hd_dir *dir, const double *p, uint32_t *index, fl_error *err);
 
-/* The proven upper bound of max_{x in s} d(x, B) over a simplex (see hausdorff_refine.c). */
-double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s);
+/* The proven upper bound of max_{x in s} d(x, B) over a simplex (see hausdorff_refine.c);
+ * bound (1) alone once it is <= enough (pass 0 for the tightest). */
+double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s, double enough);
 
 /* Bound (2) with one more candidate element: the one closest to the centroid of the corners'
  * closest points (when those lie on an edge or vertex of B, the elements the corners reported

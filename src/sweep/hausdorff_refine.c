@@ -112,7 +112,9 @@ static double element_distance(const hd_dir *dir, const double *p, uint32_t e)
  * exceeds `best` (the bound to beat). Returns the largest computed corner distance of the best
  * candidate, or INFINITY when none beats `best`. Rounding (added by the caller): the computed
  * closest point q is within tau of t, and |p - q| is computed to a few ulps. This contains
- * bound (2): when every c_i lies on t, d(p_i, t) <= d_i. */
+ * bound (2): when every c_i lies on t, d(p_i, t) <= d_i. For a corner whose own sample point
+ * c_i was computed on t, d_i = |p_i - c_i| is used: d(p_i, t) <= d_i + d(c_i, t), the same
+ * tau. */
 static double fixed_element_bound(const hd_dir *dir, const hd_sample *const *c,
                                   const uint32_t *cand, int n, double best)
 {
@@ -124,8 +126,8 @@ static double fixed_element_bound(const hd_dir *dir, const hd_sample *const *c,
             seen = cand[i] == e;
         if (seen) continue;
         double m = 0;
-        for (int i = 0; i < dir->k && m < best; i++)
-            m = fmax(m, element_distance(dir, c[i]->p, e));
+        for (int i = 0; i < dir->k && m < best; i++) /* own element: c_i is its point there */
+            m = fmax(m, c[i]->elem == e ? c[i]->d : element_distance(dir, c[i]->p, e));
         if (m < best) best = found = m;
     }
     return found;
@@ -204,7 +206,7 @@ static double mean_square_bound(const double *a, int k, double K, double *mu_out
     return fmax(q, amax);
 }
 
-double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s)
+double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s, double enough)
 {
     const hd_sample *c[3];
     double maxd = max_corner_distance(dir, s, c), mag = 0, kmax = 0;
@@ -224,14 +226,14 @@ double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *
         a[i] = c[i]->d * c[i]->d;
     double mu, u2 = mean_square_bound(a, dir->k, kmax, &mu);
     u2 += 32 * HD_ULP * (maxd * maxd + mag + fabs(mu) + kmax);
-    double u1 = sqrt(u2);
+    double u1 = sqrt(u2), b1 = u1 * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
+    if (b1 <= enough) return b1;
     /* (3) with the corners' own elements (an edge or vertex of B lies on several elements, so
      * every corner's is tried); it only replaces (1) where it is smaller after its slack. */
     double tau = 256 * HD_ULP * run->scale;
     uint32_t cand[3] = {c[0]->elem, c[1]->elem, dir->k == 3 ? c[2]->elem : FL_SWEEP_NONE};
     double m = fixed_element_bound(dir, c, cand, dir->k, u1 - tau);
-    if (m < INFINITY) return element_bound(run, m, tau);
-    return u1 * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
+    return m < INFINITY ? element_bound(run, m, tau) : b1;
 }
 
 /* ---- a max-heap of simplices by bound, for the refinement of one simplex of A ---- */
@@ -384,8 +386,10 @@ static fl_status split(refine *rf, const hd_simplex *s, int ei, fl_error *err)
     c0.tried = c1.tried = 1; /* only A's own simplices try it: a split's corners are new */
     c0.v[(ei + 1) % k] = m;  /* keeps a, replaces b: orientation preserved */
     c1.v[ei] = m;
-    c0.upper = hd_simplex_bound(rf->run, dir, &c0);
-    c1.upper = hd_simplex_bound(rf->run, dir, &c1);
+    /* A child whose bound (1) is already below the threshold is final: (3) is not needed. */
+    double t = threshold(rf);
+    c0.upper = hd_simplex_bound(rf->run, dir, &c0, t);
+    c1.upper = hd_simplex_bound(rf->run, dir, &c1, t);
     if (heap_push(&rf->heap, &c0) || heap_push(&rf->heap, &c1))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     return FL_OK;

@@ -78,6 +78,21 @@ fl_status hd_adjacency(hd_dir *dir, const uint32_t *idx, size_t ns, fl_error *er
     return FL_OK;
 }
 
+/* Measures used vertex v of A into its sample slot (from the samples `near` when it can) and
+ * marks it measured (used = 2); reports progress now and then. */
+static fl_status measure_vertex(hd_run *run, hd_dir *d, const hd_shape *a, size_t v,
+                                const uint32_t *near, int n, size_t *done, fl_error *err)
+{
+    hd_sample *smp = (hd_sample *)d->samples.data + v;
+    fl_status st = hd_sample_near(run, d, a->xyz + 3 * v, near, n, smp, err);
+    if (st) return st;
+    hd_note_sample(run, d, (uint32_t)v);
+    d->used[v] = 2;
+    if ((++*done & 4095) == 0 && fl_progress(run->progress, run->progress_user, "hausdorff", 0))
+        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+    return FL_OK;
+}
+
 /* The vertex pass of one direction: A's used vertices as samples, then A's simplices with
  * their bounds. Samples 0..nv-1 are A's vertices (unused ones are placeholders). */
 static fl_status dir_init(hd_run *run, hd_dir *d, const hd_shape *a, const hd_shape *bshape,
@@ -100,19 +115,29 @@ static fl_status dir_init(hd_run *run, hd_dir *d, const hd_shape *a, const hd_sh
     if (st) return st;
     for (size_t t = 0; t < a->ns * (size_t)a->k; t++)
         d->used[a->idx[t]] = 1;
-    for (size_t v = 0; st == FL_OK && v < a->nv; v++) {
-        uint32_t index;
-        if (d->used[v]) {
-            st = hd_measure(run, d, a->xyz + 3 * v, &index, err);
-        } else {
-            /* Not a sample: keeps its position so that a kept field can measure it. */
-            hd_sample none = {{0, 0, 0}, {0, 0, 0}, 0, FL_SWEEP_NONE, 0};
-            memcpy(none.p, a->xyz + 3 * v, sizeof none.p);
-            fl_vec_push(&d->samples, &none, 1); /* reserved above */
+    /* Not yet samples: unused vertices stay so (they keep their position so that a kept field
+     * can measure them); used ones are measured in place below. */
+    for (size_t v = 0; v < a->nv; v++) {
+        hd_sample none = {{0, 0, 0}, {0, 0, 0}, 0, FL_SWEEP_NONE, 0};
+        memcpy(none.p, a->xyz + 3 * v, sizeof none.p);
+        fl_vec_push(&d->samples, &none, 1); /* reserved above */
+    }
+    /* Every 8th used vertex by a cursor query, in file order (coherent, §5.1): the lower bound
+     * gets near its final value. Then the rest triangle by triangle, from the elements of the
+     * corners already measured (hd_sample_near): a vertex whose distance there is within the
+     * lower bound needs no query, and cannot be the maximum (its true distance is at most the
+     * lower bound at that time), so the vertex pass still finds the largest vertex distance. */
+    size_t done = 0;
+    for (size_t v = 0; st == FL_OK && v < a->nv; v += 8)
+        if (d->used[v]) st = measure_vertex(run, d, a, v, NULL, 0, &done, err);
+    for (size_t t = 0; st == FL_OK && t < a->ns; t++) {
+        uint32_t near[3];
+        int n = 0;
+        for (int i = 0; st == FL_OK && i < a->k; i++) {
+            uint32_t v = a->idx[(size_t)a->k * t + (size_t)i];
+            if (d->used[v] == 1) st = measure_vertex(run, d, a, v, near, n, &done, err);
+            near[n++] = v;
         }
-        if (st == FL_OK && (v & 4095) == 4095 &&
-            fl_progress(run->progress, run->progress_user, "hausdorff", 0))
-            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
     }
     d->simplex_count = a->ns;
     for (size_t t = 0; st == FL_OK && t < a->ns; t++) {

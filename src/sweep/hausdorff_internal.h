@@ -76,6 +76,15 @@ fl_status hd_adjacency(hd_dir *dir, const uint32_t *idx, size_t ns, fl_error *er
  * Returns its index through *index. */
 fl_status hd_measure(hd_run *run, hd_dir *dir, const double *p, uint32_t *index, fl_error *err);
 
+/* Updates dir->lower with sample `index` when it is exact. */
+void hd_note_sample(hd_run *run, hd_dir *dir, uint32_t index);
+
+/* The sample at p into *out: from the elements of samples near[0..n) (n <= 3) and their
+ * neighbours when that point of B is within dir->lower (inexact), else a cursor query. Does
+ * not store it; the caller stores it and calls hd_note_sample. */
+fl_status hd_sample_near(hd_run *run, hd_dir *dir, const double *p, const uint32_t *near, int n,
+                         hd_sample *out, fl_error *err);
+
 /* The proven upper bound of max_{x in s} d(x, B) over a simplex (see hausdorff_refine.c);
  * bound (1) alone once it is <= enough (pass 0 for the tightest). */
 double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s, double enough);

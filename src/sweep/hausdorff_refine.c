@@ -55,31 +55,47 @@ static double dist2(const double *a, const double *b)
     return s;
 }
 
+/* The sample at p by a cursor query: exact. */
+static fl_status query_sample(hd_run *run, hd_dir *dir, const double *p, hd_sample *smp,
+                              fl_error *err)
+{
+    fl_closest r;
+    fl_status st = fl_sweep_cursor_closest(dir->cursor, p, 0.0, &r, err);
+    if (st) return st;
+    memcpy(smp->p, p, sizeof smp->p);
+    memcpy(smp->c, r.point, sizeof smp->c);
+    if (dir->dim == 2) smp->p[2] = smp->c[2] = 0;
+    smp->d = sqrt(dist2(smp->p, smp->c));
+    smp->elem = r.element;
+    smp->exact = 1;
+    run->samples++;
+    return FL_OK;
+}
+
+void hd_note_sample(hd_run *run, hd_dir *dir, uint32_t index)
+{
+    const hd_sample *smp = (const hd_sample *)dir->samples.data + index;
+    if (!smp->exact) return;
+    /* The true d(p, B) is at least the measured one minus its rounding (the sweep's own
+     * slack is 64 ulps of the coordinates; p is itself a rounded point of A). */
+    double lower = fmax(0.0, smp->d - 128 * HD_ULP * run->scale);
+    if (lower > dir->lower || dir->lower_sample == UINT32_MAX) {
+        dir->lower = fmax(dir->lower, lower);
+        dir->lower_sample = index;
+    }
+}
+
 fl_status hd_measure(hd_run *run, hd_dir *dir, const double *p, uint32_t *index, fl_error *err)
 {
     if (dir->samples.count >= UINT32_MAX)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hausdorff: more than 2^32 samples");
-    fl_closest r;
-    fl_status st = fl_sweep_cursor_closest(dir->cursor, p, 0.0, &r, err);
-    if (st) return st;
     hd_sample smp;
-    memcpy(smp.p, p, sizeof smp.p);
-    memcpy(smp.c, r.point, sizeof smp.c);
-    if (dir->dim == 2) smp.p[2] = smp.c[2] = 0;
-    smp.d = sqrt(dist2(smp.p, smp.c));
-    smp.elem = r.element;
-    smp.exact = 1;
+    fl_status st = query_sample(run, dir, p, &smp, err);
+    if (st) return st;
     if (fl_vec_push(&dir->samples, &smp, 1))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     *index = (uint32_t)(dir->samples.count - 1);
-    run->samples++;
-    /* The true d(p, B) is at least the measured one minus its rounding (the sweep's own
-     * slack is 64 ulps of the coordinates; p is itself a rounded point of A). */
-    double lower = fmax(0.0, smp.d - 128 * HD_ULP * run->scale);
-    if (lower > dir->lower || dir->lower_sample == UINT32_MAX) {
-        dir->lower = fmax(dir->lower, lower);
-        dir->lower_sample = *index;
-    }
+    hd_note_sample(run, dir, *index);
     return FL_OK;
 }
 
@@ -325,49 +341,74 @@ static double longest_edge(const hd_dir *dir, const hd_simplex *s, int *ei)
     return best;
 }
 
-/* The sample at the midpoint `mid` of corners a and b. A cursor query costs dozens of distance
- * evaluations; the elements of a and b and their neighbours across edges usually hold the
- * closest point too. When the nearest point q on those candidates is already no farther than
- * the direction's lower bound, the exact distance (<= |mid - q|) cannot raise the lower bound,
- * so q is kept as an inexact sample: a point of B, which is all bounds (1) and (3) need (their
- * proofs use c_i in B and the elements as candidates, never that c_i is the closest). Inexact
- * samples never touch the lower bound. The field (keep_field) wants exact distances. */
-static fl_status measure_midpoint(refine *rf, const double *mid, uint32_t a, uint32_t b,
-                                  uint32_t *m, fl_error *err)
+/* The nearest point to p on the elements of the samples `near` and their neighbours across
+ * edges: a point of B, so d(p, B) <= best->d. 0 when there is no candidate. */
+static int candidate_sample(const hd_dir *dir, const double *p, const uint32_t *near, int n,
+                            hd_sample *best)
 {
-    hd_dir *dir = rf->dir;
     const hd_sample *smp = dir->samples.data;
-    if (rf->run->keep_field || dir->samples.count >= UINT32_MAX || !dir->b_adj)
-        return hd_measure(rf->run, dir, mid, m, err);
-    uint32_t cand[2 * 4];
-    int n = 0, k = dir->k;
-    uint32_t ends[2] = {smp[a].elem, smp[b].elem};
-    for (int j = 0; j < 2; j++) {
-        if (ends[j] == FL_SWEEP_NONE) continue;
-        cand[n++] = ends[j];
+    uint32_t cand[3 * 4];
+    int m = 0, k = dir->k;
+    for (int j = 0; j < n && j < 3; j++) {
+        uint32_t e = smp[near[j]].elem;
+        if (e == FL_SWEEP_NONE) continue;
+        cand[m++] = e;
         for (int i = 0; i < k; i++)
-            cand[n++] = dir->b_adj[(size_t)k * ends[j] + (size_t)i];
+            cand[m++] = dir->b_adj[(size_t)k * e + (size_t)i];
     }
-    hd_sample best = {{mid[0], mid[1], mid[2]}, {0, 0, 0}, INFINITY, FL_SWEEP_NONE, 0};
-    for (int j = 0; j < n; j++) {
+    hd_sample none = {{p[0], p[1], p[2]}, {0, 0, 0}, INFINITY, FL_SWEEP_NONE, 0};
+    *best = none;
+    for (int j = 0; j < m; j++) {
         int seen = cand[j] == FL_SWEEP_NONE;
         for (int i = 0; i < j && !seen; i++)
             seen = cand[i] == cand[j];
         if (seen) continue;
-        double q[3], d = element_closest(dir, mid, cand[j], q);
-        if (d < best.d) {
-            best.d = d;
-            best.elem = cand[j];
-            memcpy(best.c, q, sizeof q);
+        double q[3], d = element_closest(dir, p, cand[j], q);
+        if (d < best->d) {
+            best->d = d;
+            best->elem = cand[j];
+            memcpy(best->c, q, sizeof q);
         }
     }
-    if (!(best.d <= dir->lower)) return hd_measure(rf->run, dir, mid, m, err);
-    if (dir->dim == 2) best.p[2] = best.c[2] = 0;
-    best.d = sqrt(dist2(best.p, best.c));
-    if (fl_vec_push(&dir->samples, &best, 1))
+    if (best->elem == FL_SWEEP_NONE) return 0;
+    if (dir->dim == 2) best->p[2] = best->c[2] = 0;
+    best->d = sqrt(dist2(best->p, best->c));
+    return 1;
+}
+
+/* A cursor query costs dozens of distance evaluations (~54 on the benchmark meshes); the
+ * elements of nearby samples and their neighbours usually hold the closest point too. When
+ * the nearest point q on those candidates is already no farther than the direction's lower
+ * bound, the exact distance (<= |p - q|) cannot raise the lower bound, so q is kept as an
+ * inexact sample: a point of B, which is all bounds (1) and (3) need (their proofs use c_i in
+ * B and the elements as candidates, never that c_i is the closest). Inexact samples never
+ * touch the lower bound (hd_note_sample). The field (keep_field) wants exact distances. */
+fl_status hd_sample_near(hd_run *run, hd_dir *dir, const double *p, const uint32_t *near, int n,
+                         hd_sample *out, fl_error *err)
+{
+    if (!run->keep_field && dir->b_adj && dir->lower_sample != UINT32_MAX &&
+        candidate_sample(dir, p, near, n, out) && out->d <= dir->lower) {
+        run->samples++;
+        return FL_OK;
+    }
+    return query_sample(run, dir, p, out, err);
+}
+
+/* The sample at the midpoint `mid` of corners a and b, from their elements when it can. */
+static fl_status measure_midpoint(refine *rf, const double *mid, uint32_t a, uint32_t b,
+                                  uint32_t *m, fl_error *err)
+{
+    hd_dir *dir = rf->dir;
+    if (dir->samples.count >= UINT32_MAX)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hausdorff: more than 2^32 samples");
+    uint32_t near[2] = {a, b};
+    hd_sample smp;
+    fl_status st = hd_sample_near(rf->run, dir, mid, near, 2, &smp, err);
+    if (st) return st;
+    if (fl_vec_push(&dir->samples, &smp, 1))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     *m = (uint32_t)(dir->samples.count - 1);
-    rf->run->samples++;
+    hd_note_sample(rf->run, dir, *m);
     return FL_OK;
 }
 
@@ -375,7 +416,7 @@ static fl_status split(refine *rf, const hd_simplex *s, int ei, fl_error *err)
 {
     hd_dir *dir = rf->dir;
     int k = dir->k;
-    uint32_t a = s->v[ei], b = s->v[(ei + 1) % k], m;
+    uint32_t a = s->v[ei], b = s->v[(ei + 1) % k], m = 0;
     const hd_sample *smp = dir->samples.data;
     double mid[3];
     for (int x = 0; x < 3; x++)

@@ -1,7 +1,9 @@
 /* Certified Hausdorff distance between meshes or polylines, Guéziec 2001 §6: the public calls.
  *
- * Each direction h(A,B) starts from A's vertices as samples with their exact closest points on
- * B (one Meshsweeper cursor per direction, §5.1), bounds every simplex of A from above
+ * Each direction h(A,B) starts from A's vertices as samples with points on B (the exact closest
+ * points through one Meshsweeper cursor per direction, §5.1, or, where that cannot raise the
+ * lower bound, the nearest point on nearby candidate elements), bounds every simplex of A from
+ * above
  * (hausdorff_refine.c) and then refines only the simplices whose bound can still exceed the
  * current lower bound. Both directions get their vertex pass first; the one with the larger
  * lower bound is refined first (§6: "we can determine early ... which of the maximum

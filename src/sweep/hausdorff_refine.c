@@ -3,12 +3,13 @@
  * can still exceed the current lower bound.
  *
  * The upper bound (docs/hausdorff.md has the full proof). Let the corners p_0..p_{k-1} of a
- * simplex s of A (k = 3 triangle, k = 2 segment) have closest points c_i on B at distances
- * d_i. A point of s is x = sum_i l_i p_i with barycentrics l_i >= 0 summing to 1, and
- * d(x, B) <= min_i |x - c_i| because every c_i lies on B. §6 / Fig. 9 bounds that minimum
- * exactly by cutting s with the bisector planes of the c_i. We use two relaxations of it that
- * need no bisector construction (so no fragile intersection points whose rounding would have
- * to be bounded) and have closed forms:
+ * simplex s of A (k = 3 triangle, k = 2 segment) have points c_i on B (their closest points,
+ * or for candidate-only samples some point of B) at distances d_i = |p_i - c_i|, computed on
+ * elements t_i of B. A point of s is x = sum_i l_i p_i with barycentrics l_i >= 0 summing to
+ * 1, and d(x, B) <= min_i |x - c_i| because every c_i lies on B. §6 / Fig. 9 bounds that
+ * minimum exactly by cutting s with the bisector planes of the c_i. We use a relaxation of it
+ * and a bound through B's elements, which need no bisector construction (so no fragile
+ * intersection points whose rounding would have to be bounded) and have closed forms:
  *
  *  (1) Mean-square bound. A minimum is at most any weighted mean, so
  *        d(x, B)^2 <= sum_i l_i |x - c_i|^2 = sum_i l_i d_i^2 + sum_{i<j} l_i l_j k_ij,
@@ -20,10 +21,11 @@
  *      simplex of size h the excess over max d_i is O(h^2 / d) where the c_i are close (Fig.
  *      9's first case) — the order of the bisector bound — and O(h |c_i - c_j| / d) across a
  *      bisector.
- *  (2) Same-element bound. If all c_i lie on one element (triangle / segment) t of B, then
- *      y = sum_i l_i c_i lies on t (t is convex), so d(x, B) <= |x - y| =
- *      |sum_i l_i (p_i - c_i)| <= sum_i l_i d_i <= max_i d_i: exact at the corners. This is
- *      what closes flat, parallel parts quickly, where (1) alone needs many small triangles.
+ *  (3) Fixed-element bound (fixed_element_bound). For any element t of B, d(x, B) <= d(x, t),
+ *      which is convex in x (distance to a convex set): its maximum over s is at a corner, so
+ *      max_i d(p_i, t) bounds s. Tried for the corners' own elements. It contains the earlier
+ *      same-element bound (2) (all c_i on t: d(p_i, t) <= d_i) and also closes pieces that
+ *      straddle an edge of B: what counts is the overshoot past the edge, not the piece size.
  *
  * Rounding. Every quantity is a short sum of products of coordinate differences; its
  * absolute error is a few ulps of the sum of the magnitudes of its terms. The bound adds
@@ -107,8 +109,8 @@ static double element_closest(const hd_dir *dir, const double *p, uint32_t e, do
     double bary[3], d2;
     if (dir->k == 3)
         d2 = fl_sweep_triangle_closest(p, dir->b_xyz + 3 * (size_t)v[0],
-                                       dir->b_xyz + 3 * (size_t)v[1],
-                                       dir->b_xyz + 3 * (size_t)v[2], bary, q);
+                                       dir->b_xyz + 3 * (size_t)v[1], dir->b_xyz + 3 * (size_t)v[2],
+                                       bary, q);
     else
         d2 = fl_sweep_segment_closest(p, dir->b_xyz + 3 * (size_t)v[0],
                                       dir->b_xyz + 3 * (size_t)v[1], bary, q);

@@ -1,7 +1,9 @@
 /* Certified Hausdorff distance between meshes or polylines, Guéziec 2001 §6: the public calls.
  *
- * Each direction h(A,B) starts from A's vertices as samples with their exact closest points on
- * B (one Meshsweeper cursor per direction, §5.1), bounds every simplex of A from above
+ * Each direction h(A,B) starts from A's vertices as samples with points on B (the exact closest
+ * points through one Meshsweeper cursor per direction, §5.1, or, where that cannot raise the
+ * lower bound, the nearest point on nearby candidate elements), bounds every simplex of A from
+ * above
  * (hausdorff_refine.c) and then refines only the simplices whose bound can still exceed the
  * current lower bound. Both directions get their vertex pass first; the one with the larger
  * lower bound is refined first (§6: "we can determine early ... which of the maximum
@@ -30,6 +32,67 @@ static void dir_free(hd_dir *d)
     fl_vec_free(&d->leaves);
     free(d->used);
     free(d->simplices);
+    free(d->b_adj);
+}
+
+/* One side of an element for the adjacency: an edge (triangles) or an end (segments). */
+typedef struct hd_side {
+    uint32_t lo, hi, elem, slot;
+} hd_side;
+
+static int side_cmp(const void *x, const void *y)
+{
+    const hd_side *a = x, *b = y;
+    if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
+    if (a->hi != b->hi) return a->hi < b->hi ? -1 : 1;
+    return (a->elem > b->elem) - (a->elem < b->elem);
+}
+
+/* Elements sharing a side are neighbours; where more than two share one (non-manifold), each
+ * gets the next in the sorted run, cyclically. Only a heuristic for candidate elements. */
+fl_status hd_adjacency(hd_dir *dir, const uint32_t *idx, size_t ns, fl_error *err)
+{
+    size_t k = (size_t)dir->k, n = ns * k;
+    hd_side *sd = fl_alloc_array(n, sizeof *sd);
+    dir->b_adj = fl_alloc_array(n, sizeof *dir->b_adj);
+    if (!sd || !dir->b_adj) {
+        free(sd);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    }
+    for (size_t e = 0; e < ns; e++)
+        for (size_t i = 0; i < k; i++) {
+            uint32_t a = idx[k * e + i], b = k == 3 ? idx[k * e + (i + 1) % 3] : a;
+            hd_side s = {a < b ? a : b, a < b ? b : a, (uint32_t)e, (uint32_t)i};
+            sd[k * e + i] = s;
+            dir->b_adj[k * e + i] = FL_SWEEP_NONE;
+        }
+    qsort(sd, n, sizeof *sd, side_cmp);
+    for (size_t i = 0, j; i < n; i = j) {
+        for (j = i + 1; j < n && sd[j].lo == sd[i].lo && sd[j].hi == sd[i].hi;)
+            j++;
+        if (j - i < 2) continue;
+        for (size_t m = i; m < j; m++) {
+            const hd_side *o = sd + (m + 1 < j ? m + 1 : i);
+            dir->b_adj[k * sd[m].elem + sd[m].slot] = o->elem;
+        }
+    }
+    free(sd);
+    return FL_OK;
+}
+
+/* Measures used vertex v of A into its sample slot (from the samples `near` when it can) and
+ * marks it measured (used = 2); reports progress now and then. */
+static fl_status measure_vertex(hd_run *run, hd_dir *d, const hd_shape *a, size_t v,
+                                const uint32_t *near, int n, size_t *done, fl_error *err)
+{
+    hd_sample *smp = (hd_sample *)d->samples.data + v;
+    fl_status st = hd_sample_near(run, d, a->xyz + 3 * v, near, n, smp, err);
+    if (st) return st;
+    hd_note_sample(run, d, (uint32_t)v);
+    d->used[v] = 2;
+    if ((++*done & 4095) == 0 && fl_progress(run->progress, run->progress_user, "hausdorff", 0))
+        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+    return FL_OK;
 }
 
 /* The vertex pass of one direction: A's used vertices as samples, then A's simplices with
@@ -50,21 +113,33 @@ static fl_status dir_init(hd_run *run, hd_dir *d, const hd_shape *a, const hd_sh
     if (st) return st;
     if (!d->used || !d->simplices || fl_vec_reserve(&d->samples, a->nv))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    st = hd_adjacency(d, bshape->idx, bshape->ns, err);
+    if (st) return st;
     for (size_t t = 0; t < a->ns * (size_t)a->k; t++)
         d->used[a->idx[t]] = 1;
-    for (size_t v = 0; st == FL_OK && v < a->nv; v++) {
-        uint32_t index;
-        if (d->used[v]) {
-            st = hd_measure(run, d, a->xyz + 3 * v, &index, err);
-        } else {
-            /* Not a sample: keeps its position so that a kept field can measure it. */
-            hd_sample none = {{0, 0, 0}, {0, 0, 0}, 0, FL_SWEEP_NONE};
-            memcpy(none.p, a->xyz + 3 * v, sizeof none.p);
-            fl_vec_push(&d->samples, &none, 1); /* reserved above */
+    /* Not yet samples: unused vertices stay so (they keep their position so that a kept field
+     * can measure them); used ones are measured in place below. */
+    for (size_t v = 0; v < a->nv; v++) {
+        hd_sample none = {{0, 0, 0}, {0, 0, 0}, 0, FL_SWEEP_NONE, 0};
+        memcpy(none.p, a->xyz + 3 * v, sizeof none.p);
+        fl_vec_push(&d->samples, &none, 1); /* reserved above */
+    }
+    /* Every 8th used vertex by a cursor query, in file order (coherent, §5.1): the lower bound
+     * gets near its final value. Then the rest triangle by triangle, from the elements of the
+     * corners already measured (hd_sample_near): a vertex whose distance there is within the
+     * lower bound needs no query, and cannot be the maximum (its true distance is at most the
+     * lower bound at that time), so the vertex pass still finds the largest vertex distance. */
+    size_t done = 0;
+    for (size_t v = 0; st == FL_OK && v < a->nv; v += 8)
+        if (d->used[v]) st = measure_vertex(run, d, a, v, NULL, 0, &done, err);
+    for (size_t t = 0; st == FL_OK && t < a->ns; t++) {
+        uint32_t near[3];
+        int n = 0;
+        for (int i = 0; st == FL_OK && i < a->k; i++) {
+            uint32_t v = a->idx[(size_t)a->k * t + (size_t)i];
+            if (d->used[v] == 1) st = measure_vertex(run, d, a, v, near, n, &done, err);
+            near[n++] = v;
         }
-        if (st == FL_OK && (v & 4095) == 4095 &&
-            fl_progress(run->progress, run->progress_user, "hausdorff", 0))
-            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
     }
     d->simplex_count = a->ns;
     for (size_t t = 0; st == FL_OK && t < a->ns; t++) {
@@ -73,7 +148,7 @@ static fl_status dir_init(hd_run *run, hd_dir *d, const hd_shape *a, const hd_sh
         s->tried = 0;
         for (int i = 0; i < a->k; i++)
             s->v[i] = a->idx[(size_t)a->k * t + (size_t)i];
-        s->upper = hd_simplex_bound(run, d, s);
+        s->upper = hd_simplex_bound(run, d, s, 0);
     }
     return st;
 }

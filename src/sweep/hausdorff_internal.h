@@ -17,6 +17,8 @@ typedef struct hd_sample {
     double p[3], c[3];
     double d;
     uint32_t elem;
+    uint32_t exact; /* 1: c is B's closest point (a cursor query); 0: c is only some point of
+                     * B (the nearest on a few candidate elements), so d >= d(p, B) */
 } hd_sample;
 
 /* A simplex of the refinement of A: corners are sample indices (k = 3 for triangles, 2 for
@@ -51,7 +53,9 @@ typedef struct hd_dir {
     int dim;                 /* query dimension of the cursor: 2 or 3 */
     fl_sweep_cursor *cursor; /* on B */
     const double *b_xyz;     /* B's vertices (3D) and simplices (k indices each), for the */
-    const uint32_t *b_idx;   /* same-element bound */
+    const uint32_t *b_idx;   /* fixed-element bound */
+    uint32_t *b_adj;         /* k neighbours of each element of B across its edges (triangles)
+                              * or ends (segments), FL_SWEEP_NONE where none: candidates */
     fl_vec samples;          /* hd_sample; the first ones are A's vertices */
     uint32_t *used;          /* 1 for vertices of A used by a simplex */
     hd_simplex *simplices;   /* A's own simplices, with their initial bounds */
@@ -65,12 +69,25 @@ typedef struct hd_dir {
 /* Monotonic clock in seconds. */
 double hd_now(void);
 
+/* Builds dir->b_adj for B's k-corner elements (ns of them, indices idx). */
+fl_status hd_adjacency(hd_dir *dir, const uint32_t *idx, size_t ns, fl_error *err);
+
 /* Measures the sample at p (3 doubles) with the cursor and appends it; updates dir->lower.
  * Returns its index through *index. */
 fl_status hd_measure(hd_run *run, hd_dir *dir, const double *p, uint32_t *index, fl_error *err);
 
-/* The proven upper bound of max_{x in s} d(x, B) over a simplex (see hausdorff_refine.c). */
-double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s);
+/* Updates dir->lower with sample `index` when it is exact. */
+void hd_note_sample(hd_run *run, hd_dir *dir, uint32_t index);
+
+/* The sample at p into *out: from the elements of samples near[0..n) (n <= 3) and their
+ * neighbours when that point of B is within dir->lower (inexact), else a cursor query. Does
+ * not store it; the caller stores it and calls hd_note_sample. */
+fl_status hd_sample_near(hd_run *run, hd_dir *dir, const double *p, const uint32_t *near, int n,
+                         hd_sample *out, fl_error *err);
+
+/* The proven upper bound of max_{x in s} d(x, B) over a simplex (see hausdorff_refine.c);
+ * bound (1) alone once it is <= enough (pass 0 for the tightest). */
+double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s, double enough);
 
 /* Bound (2) with one more candidate element: the one closest to the centroid of the corners'
  * closest points (when those lie on an edge or vertex of B, the elements the corners reported

@@ -3,12 +3,13 @@
  * can still exceed the current lower bound.
  *
  * The upper bound (docs/hausdorff.md has the full proof). Let the corners p_0..p_{k-1} of a
- * simplex s of A (k = 3 triangle, k = 2 segment) have closest points c_i on B at distances
- * d_i. A point of s is x = sum_i l_i p_i with barycentrics l_i >= 0 summing to 1, and
- * d(x, B) <= min_i |x - c_i| because every c_i lies on B. §6 / Fig. 9 bounds that minimum
- * exactly by cutting s with the bisector planes of the c_i. We use two relaxations of it that
- * need no bisector construction (so no fragile intersection points whose rounding would have
- * to be bounded) and have closed forms:
+ * simplex s of A (k = 3 triangle, k = 2 segment) have points c_i on B (their closest points,
+ * or for candidate-only samples some point of B) at distances d_i = |p_i - c_i|, computed on
+ * elements t_i of B. A point of s is x = sum_i l_i p_i with barycentrics l_i >= 0 summing to
+ * 1, and d(x, B) <= min_i |x - c_i| because every c_i lies on B. §6 / Fig. 9 bounds that
+ * minimum exactly by cutting s with the bisector planes of the c_i. We use a relaxation of it
+ * and a bound through B's elements, which need no bisector construction (so no fragile
+ * intersection points whose rounding would have to be bounded) and have closed forms:
  *
  *  (1) Mean-square bound. A minimum is at most any weighted mean, so
  *        d(x, B)^2 <= sum_i l_i |x - c_i|^2 = sum_i l_i d_i^2 + sum_{i<j} l_i l_j k_ij,
@@ -20,10 +21,11 @@
  *      simplex of size h the excess over max d_i is O(h^2 / d) where the c_i are close (Fig.
  *      9's first case) — the order of the bisector bound — and O(h |c_i - c_j| / d) across a
  *      bisector.
- *  (2) Same-element bound. If all c_i lie on one element (triangle / segment) t of B, then
- *      y = sum_i l_i c_i lies on t (t is convex), so d(x, B) <= |x - y| =
- *      |sum_i l_i (p_i - c_i)| <= sum_i l_i d_i <= max_i d_i: exact at the corners. This is
- *      what closes flat, parallel parts quickly, where (1) alone needs many small triangles.
+ *  (3) Fixed-element bound (fixed_element_bound). For any element t of B, d(x, B) <= d(x, t),
+ *      which is convex in x (distance to a convex set): its maximum over s is at a corner, so
+ *      max_i d(p_i, t) bounds s. Tried for the corners' own elements. It contains the earlier
+ *      same-element bound (2) (all c_i on t: d(p_i, t) <= d_i) and also closes pieces that
+ *      straddle an edge of B: what counts is the overshoot past the edge, not the piece size.
  *
  * Rounding. Every quantity is a short sum of products of coordinate differences; its
  * absolute error is a few ulps of the sum of the magnitudes of its terms. The bound adds
@@ -55,54 +57,106 @@ static double dist2(const double *a, const double *b)
     return s;
 }
 
+/* The sample at p by a cursor query: exact. */
+static fl_status query_sample(hd_run *run, hd_dir *dir, const double *p, hd_sample *smp,
+                              fl_error *err)
+{
+    fl_closest r;
+    fl_status st = fl_sweep_cursor_closest(dir->cursor, p, 0.0, &r, err);
+    if (st) return st;
+    memcpy(smp->p, p, sizeof smp->p);
+    memcpy(smp->c, r.point, sizeof smp->c);
+    if (dir->dim == 2) smp->p[2] = smp->c[2] = 0;
+    smp->d = sqrt(dist2(smp->p, smp->c));
+    smp->elem = r.element;
+    smp->exact = 1;
+    run->samples++;
+    return FL_OK;
+}
+
+void hd_note_sample(hd_run *run, hd_dir *dir, uint32_t index)
+{
+    const hd_sample *smp = (const hd_sample *)dir->samples.data + index;
+    if (!smp->exact) return;
+    /* The true d(p, B) is at least the measured one minus its rounding (the sweep's own
+     * slack is 64 ulps of the coordinates; p is itself a rounded point of A). */
+    double lower = fmax(0.0, smp->d - 128 * HD_ULP * run->scale);
+    if (lower > dir->lower || dir->lower_sample == UINT32_MAX) {
+        dir->lower = fmax(dir->lower, lower);
+        dir->lower_sample = index;
+    }
+}
+
 fl_status hd_measure(hd_run *run, hd_dir *dir, const double *p, uint32_t *index, fl_error *err)
 {
     if (dir->samples.count >= UINT32_MAX)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hausdorff: more than 2^32 samples");
-    fl_closest r;
-    fl_status st = fl_sweep_cursor_closest(dir->cursor, p, 0.0, &r, err);
-    if (st) return st;
     hd_sample smp;
-    memcpy(smp.p, p, sizeof smp.p);
-    memcpy(smp.c, r.point, sizeof smp.c);
-    if (dir->dim == 2) smp.p[2] = smp.c[2] = 0;
-    smp.d = sqrt(dist2(smp.p, smp.c));
-    smp.elem = r.element;
+    fl_status st = query_sample(run, dir, p, &smp, err);
+    if (st) return st;
     if (fl_vec_push(&dir->samples, &smp, 1))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     *index = (uint32_t)(dir->samples.count - 1);
-    run->samples++;
-    /* The true d(p, B) is at least the measured one minus its rounding (the sweep's own
-     * slack is 64 ulps of the coordinates; p is itself a rounded point of A). */
-    double lower = fmax(0.0, smp.d - 128 * HD_ULP * run->scale);
-    if (lower > dir->lower || dir->lower_sample == UINT32_MAX) {
-        dir->lower = fmax(dir->lower, lower);
-        dir->lower_sample = *index;
-    }
+    hd_note_sample(run, dir, *index);
     return FL_OK;
 }
 
-/* Whether every corner's closest point lies on element e of B, up to tau (bound (2)). */
-static int all_on_element(const hd_dir *dir, const hd_sample *const *c, uint32_t e, double tau)
+/* Distance from p to element e of B (triangle, or segment for polylines), as computed; the
+ * computed closest point is within tau of the element (same rounding as the sweep's own). */
+static double element_closest(const hd_dir *dir, const double *p, uint32_t e, double *q)
 {
     const uint32_t *v = dir->b_idx + (size_t)dir->k * e;
-    for (int i = 0; i < dir->k; i++) {
-        double bary[3], q[3], d2;
-        if (dir->k == 3)
-            d2 = fl_sweep_triangle_closest(c[i]->c, dir->b_xyz + 3 * (size_t)v[0],
-                                           dir->b_xyz + 3 * (size_t)v[1],
-                                           dir->b_xyz + 3 * (size_t)v[2], bary, q);
-        else
-            d2 = fl_sweep_segment_closest(c[i]->c, dir->b_xyz + 3 * (size_t)v[0],
-                                          dir->b_xyz + 3 * (size_t)v[1], bary, q);
-        if (!(d2 <= tau * tau)) return 0;
-    }
-    return 1;
+    double bary[3], d2;
+    if (dir->k == 3)
+        d2 = fl_sweep_triangle_closest(p, dir->b_xyz + 3 * (size_t)v[0],
+                                       dir->b_xyz + 3 * (size_t)v[1], dir->b_xyz + 3 * (size_t)v[2],
+                                       bary, q);
+    else
+        d2 = fl_sweep_segment_closest(p, dir->b_xyz + 3 * (size_t)v[0],
+                                      dir->b_xyz + 3 * (size_t)v[1], bary, q);
+    return sqrt(d2);
 }
 
-static double same_element_bound(const hd_run *run, double maxd, double tau)
+static double element_distance(const hd_dir *dir, const double *p, uint32_t e)
 {
-    return (maxd + tau) * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
+    double q[3];
+    return element_closest(dir, p, e, q);
+}
+
+/* Bound (3), the fixed-element bound: for one element t of B, d(x, B) <= d(x, t), and
+ * x -> d(x, t) is convex (the distance to a convex set), so over the simplex its maximum is
+ * at a corner: max_{x in s} d(x, B) <= max_i d(p_i, t). Every element t gives a valid bound;
+ * this is the smallest over `cand` (n candidates), stopping a candidate as soon as one corner
+ * exceeds `best` (the bound to beat). Returns the largest computed corner distance of the best
+ * candidate, or INFINITY when none beats `best`. Rounding (added by the caller): the computed
+ * closest point q is within tau of t, and |p - q| is computed to a few ulps. This contains
+ * bound (2): when every c_i lies on t, d(p_i, t) <= d_i. For a corner whose own sample point
+ * c_i was computed on t, d_i = |p_i - c_i| is used: d(p_i, t) <= d_i + d(c_i, t), the same
+ * tau. */
+static double fixed_element_bound(const hd_dir *dir, const hd_sample *const *c,
+                                  const uint32_t *cand, int n, double best)
+{
+    double found = INFINITY;
+    for (int j = 0; j < n; j++) {
+        uint32_t e = cand[j];
+        int seen = e == FL_SWEEP_NONE;
+        for (int i = 0; i < j && !seen; i++)
+            seen = cand[i] == e;
+        if (seen) continue;
+        double m = 0;
+        for (int i = 0; i < dir->k && m < best; i++) /* own element: c_i is its point there */
+            m = fmax(m, c[i]->elem == e ? c[i]->d : element_distance(dir, c[i]->p, e));
+        if (m < best) best = found = m;
+    }
+    return found;
+}
+
+/* A bound from a computed corner distance m to one element: tau for the rounded closest point,
+ * 8 ulps relative for |p - q| and its square root, 128 ulps of the coordinates absolute (the
+ * corners are themselves rounded midpoints). */
+static double element_bound(const hd_run *run, double m, double tau)
+{
+    return (m + tau) * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
 }
 
 static double max_corner_distance(const hd_dir *dir, const hd_simplex *s, const hd_sample **c)
@@ -119,7 +173,8 @@ static double max_corner_distance(const hd_dir *dir, const hd_simplex *s, const 
 fl_status hd_try_centroid_element(hd_run *run, hd_dir *dir, hd_simplex *s, fl_error *err)
 {
     const hd_sample *c[3];
-    double maxd = max_corner_distance(dir, s, c), y[3] = {0, 0, 0};
+    double y[3] = {0, 0, 0};
+    max_corner_distance(dir, s, c);
     for (int i = 0; i < dir->k; i++)
         for (int x = 0; x < 3; x++)
             y[x] += c[i]->c[x] / dir->k;
@@ -129,8 +184,8 @@ fl_status hd_try_centroid_element(hd_run *run, hd_dir *dir, hd_simplex *s, fl_er
     if (st) return st;
     run->samples++;
     double tau = 256 * HD_ULP * run->scale;
-    if (all_on_element(dir, c, r.element, tau))
-        s->upper = fmin(s->upper, same_element_bound(run, maxd, tau));
+    double m = fixed_element_bound(dir, c, &r.element, 1, INFINITY);
+    if (m < INFINITY) s->upper = fmin(s->upper, element_bound(run, m, tau));
     return FL_OK;
 }
 
@@ -169,19 +224,10 @@ static double mean_square_bound(const double *a, int k, double K, double *mu_out
     return fmax(q, amax);
 }
 
-double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s)
+double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *s, double enough)
 {
     const hd_sample *c[3];
     double maxd = max_corner_distance(dir, s, c), mag = 0, kmax = 0;
-    /* (2): the closest points share an element (an edge or vertex of B lies on several, so
-     * every corner's element is tried). c_i is a rounded point of B: it is within tau of the
-     * element it was computed on, and tau is added to the bound. */
-    double tau = 256 * HD_ULP * run->scale;
-    for (int i = 0; i < dir->k; i++) {
-        uint32_t e = c[i]->elem;
-        if (e != FL_SWEEP_NONE && all_on_element(dir, c, e, tau))
-            return same_element_bound(run, maxd, tau);
-    }
     for (int i = 0; i < dir->k; i++)
         for (int j = i + 1; j < dir->k; j++) {
             double cc = 0, e2 = 0;
@@ -198,7 +244,14 @@ double hd_simplex_bound(const hd_run *run, const hd_dir *dir, const hd_simplex *
         a[i] = c[i]->d * c[i]->d;
     double mu, u2 = mean_square_bound(a, dir->k, kmax, &mu);
     u2 += 32 * HD_ULP * (maxd * maxd + mag + fabs(mu) + kmax);
-    return sqrt(u2) * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
+    double u1 = sqrt(u2), b1 = u1 * (1 + 8 * HD_ULP) + 128 * HD_ULP * run->scale;
+    if (b1 <= enough) return b1;
+    /* (3) with the corners' own elements (an edge or vertex of B lies on several elements, so
+     * every corner's is tried); it only replaces (1) where it is smaller after its slack. */
+    double tau = 256 * HD_ULP * run->scale;
+    uint32_t cand[3] = {c[0]->elem, c[1]->elem, dir->k == 3 ? c[2]->elem : FL_SWEEP_NONE};
+    double m = fixed_element_bound(dir, c, cand, dir->k, u1 - tau);
+    return m < INFINITY ? element_bound(run, m, tau) : b1;
 }
 
 /* ---- a max-heap of simplices by bound, for the refinement of one simplex of A ---- */
@@ -290,23 +343,96 @@ static double longest_edge(const hd_dir *dir, const hd_simplex *s, int *ei)
     return best;
 }
 
+/* The nearest point to p on the elements of the samples `near` and their neighbours across
+ * edges: a point of B, so d(p, B) <= best->d. 0 when there is no candidate. */
+static int candidate_sample(const hd_dir *dir, const double *p, const uint32_t *near, int n,
+                            hd_sample *best)
+{
+    const hd_sample *smp = dir->samples.data;
+    uint32_t cand[3 * 4];
+    int m = 0, k = dir->k;
+    for (int j = 0; j < n && j < 3; j++) {
+        uint32_t e = smp[near[j]].elem;
+        if (e == FL_SWEEP_NONE) continue;
+        cand[m++] = e;
+        for (int i = 0; i < k; i++)
+            cand[m++] = dir->b_adj[(size_t)k * e + (size_t)i];
+    }
+    hd_sample none = {{p[0], p[1], p[2]}, {0, 0, 0}, INFINITY, FL_SWEEP_NONE, 0};
+    *best = none;
+    for (int j = 0; j < m; j++) {
+        int seen = cand[j] == FL_SWEEP_NONE;
+        for (int i = 0; i < j && !seen; i++)
+            seen = cand[i] == cand[j];
+        if (seen) continue;
+        double q[3], d = element_closest(dir, p, cand[j], q);
+        if (d < best->d) {
+            best->d = d;
+            best->elem = cand[j];
+            memcpy(best->c, q, sizeof q);
+        }
+    }
+    if (best->elem == FL_SWEEP_NONE) return 0;
+    if (dir->dim == 2) best->p[2] = best->c[2] = 0;
+    best->d = sqrt(dist2(best->p, best->c));
+    return 1;
+}
+
+/* A cursor query costs dozens of distance evaluations (~54 on the benchmark meshes); the
+ * elements of nearby samples and their neighbours usually hold the closest point too. When
+ * the nearest point q on those candidates is already no farther than the direction's lower
+ * bound, the exact distance (<= |p - q|) cannot raise the lower bound, so q is kept as an
+ * inexact sample: a point of B, which is all bounds (1) and (3) need (their proofs use c_i in
+ * B and the elements as candidates, never that c_i is the closest). Inexact samples never
+ * touch the lower bound (hd_note_sample). The field (keep_field) wants exact distances. */
+fl_status hd_sample_near(hd_run *run, hd_dir *dir, const double *p, const uint32_t *near, int n,
+                         hd_sample *out, fl_error *err)
+{
+    if (!run->keep_field && dir->b_adj && dir->lower_sample != UINT32_MAX &&
+        candidate_sample(dir, p, near, n, out) && out->d <= dir->lower) {
+        run->samples++;
+        return FL_OK;
+    }
+    return query_sample(run, dir, p, out, err);
+}
+
+/* The sample at the midpoint `mid` of corners a and b, from their elements when it can. */
+static fl_status measure_midpoint(refine *rf, const double *mid, uint32_t a, uint32_t b,
+                                  uint32_t *m, fl_error *err)
+{
+    hd_dir *dir = rf->dir;
+    if (dir->samples.count >= UINT32_MAX)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "hausdorff: more than 2^32 samples");
+    uint32_t near[2] = {a, b};
+    hd_sample smp;
+    fl_status st = hd_sample_near(rf->run, dir, mid, near, 2, &smp, err);
+    if (st) return st;
+    if (fl_vec_push(&dir->samples, &smp, 1))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    *m = (uint32_t)(dir->samples.count - 1);
+    hd_note_sample(rf->run, dir, *m);
+    return FL_OK;
+}
+
 static fl_status split(refine *rf, const hd_simplex *s, int ei, fl_error *err)
 {
     hd_dir *dir = rf->dir;
     int k = dir->k;
-    uint32_t a = s->v[ei], b = s->v[(ei + 1) % k], m;
+    uint32_t a = s->v[ei], b = s->v[(ei + 1) % k], m = 0;
     const hd_sample *smp = dir->samples.data;
     double mid[3];
     for (int x = 0; x < 3; x++)
         mid[x] = 0.5 * (smp[a].p[x] + smp[b].p[x]);
-    fl_status st = hd_measure(rf->run, dir, mid, &m, err);
+    fl_status st = measure_midpoint(rf, mid, a, b, &m, err);
     if (st) return st;
     hd_simplex c0 = *s, c1 = *s;
     c0.tried = c1.tried = 1; /* only A's own simplices try it: a split's corners are new */
     c0.v[(ei + 1) % k] = m;  /* keeps a, replaces b: orientation preserved */
     c1.v[ei] = m;
-    c0.upper = hd_simplex_bound(rf->run, dir, &c0);
-    c1.upper = hd_simplex_bound(rf->run, dir, &c1);
+    /* A child whose bound (1) is already below the threshold is final: (3) is not needed. */
+    double t = threshold(rf);
+    c0.upper = hd_simplex_bound(rf->run, dir, &c0, t);
+    c1.upper = hd_simplex_bound(rf->run, dir, &c1, t);
     if (heap_push(&rf->heap, &c0) || heap_push(&rf->heap, &c1))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     return FL_OK;

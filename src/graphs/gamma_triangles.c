@@ -99,8 +99,8 @@ static int scan_triangle(const graph_grid *g, const gamma_frame *f, double kappa
     }
 }
 
-static int check_triangle(const graph_grid *g, const fl_gamma_params *p, double kappa,
-                          const uint32_t *t, fl_vec *ring, graph_builder *b)
+int gamma_triangle_check(const graph_grid *g, const fl_gamma_params *p, double kappa,
+                         const uint32_t *t, fl_vec *ring, graph_builder *b)
 {
     gamma_frame f;
     if (!gamma_frame_init(&f, g->coords, 3, t)) return 0;
@@ -117,30 +117,10 @@ static int check_triangle(const graph_grid *g, const fl_gamma_params *p, double 
 fl_status gamma_lens_triangles(const double *xyz, size_t n, const fl_gamma_params *p, double kappa,
                                const fl_graph_options *opt, graph_builder *b, fl_error *err)
 {
-    fl_progress_fn progress = opt ? opt->progress : NULL;
-    void *user = opt ? opt->progress_user : NULL;
     graph_grid g;
     fl_status st = graph_grid_build(&g, xyz, n, 3, err);
     if (st != FL_OK) return st;
-    fl_vec ring;
-    fl_vec_init(&ring, sizeof(uint32_t));
-    for (uint32_t i = 0; i < n && st == FL_OK; i++) {
-        /* Triangles with smallest vertex i: (n-i)^2/2 of them, so report the cubic share. */
-        double done = 1 - pow(1 - (double)i / (double)n, 3);
-        if (fl_progress(progress, user, "gamma triangles", done)) {
-            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
-            break;
-        }
-        for (uint32_t j = i + 1; j < n && st == FL_OK; j++)
-            for (uint32_t k = j + 1; k < n; k++) {
-                uint32_t t[3] = {i, j, k};
-                if (check_triangle(&g, p, kappa, t, &ring, b) < 0) {
-                    st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-                    break;
-                }
-            }
-    }
-    fl_vec_free(&ring);
+    st = gamma3_edge_triangles(&g, p, kappa, opt, b, err);
     graph_grid_free(&g);
     return st;
 }

@@ -3,21 +3,23 @@
  *
  * Let abc be accepted (c1' >= -kappa, kappa < 1) and non-Delaunay. Its symmetric lens
  * Λ = B(C - Tn) ∩ B(C + Tn) is empty (Lemma 3.2; C, R circumcentre and circumradius, n the unit
- * normal, g = 1/(1-kappa), T = R sqrt(g^2-1), both balls of radius gR through the circumcircle).
- * Take ab a shortest edge (length L, midpoint m, unit direction e). The angle at c is then at
- * most 60°, so C lies on c's side of ab at distance h = R cos(angle c) >= R/2 from m, in the
- * direction psi of the component of c - m orthogonal to e.
+ * normal, s = sqrt(g^2-1), g = 1/(1-kappa), T = sR, both balls of radius gR through the
+ * circumcircle). Take ab a shortest edge: length L = 2l, midpoint m, and cylindrical
+ * coordinates around the line ab (axial x, radius r, angle theta). The angle at c is at most
+ * 60°, so C lies on c's side of ab: at height h >= l/sqrt(3) above m in the half-plane of c,
+ * with h = (|c-m|^2 - l^2) / (2 r_c) and R^2 = h^2 + l^2.
  *
- * Edge wedge (the proof is in docs/gamma.md): a point q = m + x e + w (w ⊥ e) of the open ball
- * B(m, L/2) lies in Λ as soon as w·(h psi ± T n) >= 0, i.e. as soon as the angle between w and
- * psi around the axis ab is at most atan(h/T), which is at least
- *     theta0 = atan(1 / (2 sqrt(g^2 - 1)))        (16.1° for kappa = 0.5).
- * So every point p of B(m, L/2) off the axis blocks every third vertex c whose angle around ab
- * is within theta0 of p's: an edge whose Gabriel-ball points block the whole circle of angles is
- * the shortest edge of no accepted triangle, and a third vertex must lie in an unblocked angle.
+ * Lens test (the proof is in docs/gamma.md): a point q lies in the open Λ iff
+ *     f_q := (|q-m|^2 - l^2) / (2 r_q)  <  h cos(phi) - s sqrt(h^2 + l^2) |sin(phi)|,
+ * phi the angle between q and c around ab. The right side increases with h when
+ * |phi| < atan(1/s) (30° for kappa = 0.5), so q blocks every third vertex of its angle range
+ * whose h exceeds a threshold h*(f_q, phi), and no other. Per angle bin the smallest threshold
+ * H[j] over the points seen bounds the admissible h: the edge is dead when every H[j] is below
+ * l/sqrt(3), and the third vertices have h_c <= H[bin(c)], hence |c-m| <= H + sqrt(H^2 + l^2):
+ * the ring scan around m stops there, and the points it saw are the only candidates.
  *
- * The filters are floating and only ever keep a candidate when in doubt (shrunk ball, shrunk
- * angle, whole bins only, ill-conditioned angles ignored); each candidate is then decided by
+ * The filters are floating and keep a candidate whenever in doubt (worst angle of a bin,
+ * relative slack, ill-conditioned angles ignored); each candidate is then decided by
  * gamma_triangle_check, the exact early-decided witness scan, so the output and its (c0', c1')
  * are the brute force's. */
 #include <math.h>
@@ -27,6 +29,8 @@
 #include "graphs/gamma_internal.h"
 
 #define G3_PI 3.14159265358979323846
+#define G3_BINS_PER_ARC 8 /* bins per blocking half-arc atan(1/s) */
+#define G3_MAX_REACH 8
 
 typedef struct g3_ctx {
     const graph_grid *grid;
@@ -34,13 +38,13 @@ typedef struct g3_ctx {
     size_t n;
     const fl_gamma_params *params;
     double kappa;
-    double theta;    /* blocking half-angle, theta0 shrunk by a safety margin */
-    size_t bins;     /* angle bins around an edge, each at most theta/2 wide */
-    double width;    /* 2 pi / bins */
-    uint64_t *mask;  /* bins blocked for the current edge */
-    size_t words;    /* 64-bit words of mask */
-    size_t blocked;  /* bins set in mask */
-    fl_vec ring, scan; /* point lists of grid rings */
+    double s;         /* sqrt(g^2 - 1) */
+    size_t bins;      /* angle bins around an edge */
+    double width;     /* 2 pi / bins */
+    int reach;        /* bins a point can block on each side of its own */
+    double ca[G3_MAX_REACH + 1], cb[G3_MAX_REACH + 1]; /* cos, s sin of the worst angle */
+    double *limit;    /* H[j] of the current edge */
+    fl_vec ring, seen, scan; /* point lists of grid rings */
 } g3_ctx;
 
 /* The current edge: endpoints, midpoint, squared length and an orthonormal frame (e, u1, u2). */
@@ -88,14 +92,16 @@ static int edge_init(g3_edge *E, const double *xyz, uint32_t a, uint32_t b)
     return 1;
 }
 
-/* The angle of p around the edge's axis, in [-pi, pi]; NAN when it is ill-conditioned (p within
- * 1e-6 |p - m| of the axis, or not finite). Also returns |p - m|^2 in *dist2. */
-static double axis_angle(const g3_edge *E, const double *p, double *dist2)
+/* The cylindrical coordinates of p around the edge: returns the angle in [-pi, pi], or NAN when
+ * it is ill-conditioned (p within 1e-6 |p - m| of the axis, or not finite); *dist2 = |p - m|^2,
+ * *radius = the distance from the axis. */
+static double axis_coords(const g3_edge *E, const double *p, double *dist2, double *radius)
 {
     double d[3] = {p[0] - E->m[0], p[1] - E->m[1], p[2] - E->m[2]};
     double x1 = dot3(d, E->u1), x2 = dot3(d, E->u2);
     *dist2 = dot3(d, d);
     double r2 = x1 * x1 + x2 * x2;
+    *radius = sqrt(r2);
     if (!(r2 > 1e-12 * *dist2) || !isfinite(r2)) return NAN;
     return atan2(x2, x1);
 }
@@ -107,47 +113,70 @@ static size_t bin_of(const g3_ctx *c, double angle)
     return k >= (double)c->bins ? c->bins - 1 : (size_t)k;
 }
 
-static void mark_bin(g3_ctx *c, size_t k)
+/* The smallest h from which q (with f = f_q) blocks third vertices at angle phi from it, phi
+ * given by A = cos(phi) > B = s |sin(phi)|: the root of A h - B sqrt(h^2 + l^2) = f. */
+static double threshold(double A, double B, double f, double l2)
 {
-    uint64_t bit = (uint64_t)1 << (k & 63);
-    if (!(c->mask[k >> 6] & bit)) {
-        c->mask[k >> 6] |= bit;
-        c->blocked++;
+    double C = A * A - B * B;
+    return (A * f + B * sqrt(f * f + C * l2)) / C;
+}
+
+/* Lowers H[j] with q's thresholds over the bins within reach of q's bin, each taken at the
+ * farthest angle a third vertex of that bin can have from q (the threshold grows with |phi|). */
+static void block_point(g3_ctx *c, double angle, double f, double l2)
+{
+    long home = (long)bin_of(c, angle), nb = (long)c->bins;
+    for (long d = -c->reach; d <= c->reach; d++) {
+        long k = ((home + d) % nb + nb) % nb;
+        int far = d < 0 ? (int)-d : (int)d;
+        double h = threshold(c->ca[far], c->cb[far], f, l2);
+        if (h < c->limit[k]) c->limit[k] = h;
     }
 }
 
-/* Blocks the bins lying wholly within theta of `angle` (fewer bins is always safe). */
-static void block_around(g3_ctx *c, double angle)
+/* h of a third vertex at squared distance d2 from m and distance r from the axis. */
+static double apex_height(double d2, double r, double l2)
 {
-    double lo = (angle - c->theta + G3_PI) / c->width, hi = (angle + c->theta + G3_PI) / c->width;
-    long k0 = (long)ceil(lo), k1 = (long)floor(hi) - 1;
-    long nb = (long)c->bins;
-    for (long k = k0; k <= k1; k++)
-        mark_bin(c, (size_t)(((k % nb) + nb) % nb));
+    return (d2 - l2) / (2 * r);
 }
 
-/* Scans the open Gabriel ball of the edge ring by ring from the midpoint, blocking angles;
- * returns 1 when every angle is blocked (no accepted triangle has ab as a shortest edge), 0
- * otherwise, -1 out of memory. */
-static int edge_blocked(g3_ctx *c, const g3_edge *E)
+/* The largest admissible h over all bins. */
+static double max_limit(const g3_ctx *c)
 {
-    memset(c->mask, 0, c->words * sizeof *c->mask);
-    c->blocked = 0;
-    double reach2 = 0.25 * E->len2 * (1 - 1e-9), reach = sqrt(reach2);
+    double h = -INFINITY;
+    for (size_t k = 0; k < c->bins; k++)
+        if (!(c->limit[k] <= h)) h = c->limit[k]; /* NaN counts as unbounded */
+    return isnan(h) ? INFINITY : h;
+}
+
+/* Scans rings around m, lowering the bin limits, until the edge is dead (returns 1) or every
+ * admissible third vertex has been seen (returns 0; the points are in c->seen); -1 out of
+ * memory. */
+static int scan_edge(g3_ctx *c, const g3_edge *E)
+{
+    double l2 = 0.25 * E->len2, l = sqrt(l2);
+    double h_min = l / sqrt(3.0) * (1 - 1e-7);
+    for (size_t k = 0; k < c->bins; k++)
+        c->limit[k] = INFINITY;
+    c->seen.count = 0;
     for (size_t r = 0;; r++) {
         int beyond = 0;
-        c->ring.count = 0;
-        if (graph_grid_ring(c->grid, E->m, r, &c->ring, &beyond) < 0) return -1;
+        size_t first = c->seen.count;
+        if (graph_grid_ring(c->grid, E->m, r, &c->seen, &beyond) < 0) return -1;
         if (beyond) return 0;
-        const uint32_t *items = c->ring.data;
-        for (size_t i = 0; i < c->ring.count; i++) {
+        const uint32_t *items = c->seen.data;
+        for (size_t i = first; i < c->seen.count; i++) {
             uint32_t q = items[i];
             if (q == E->a || q == E->b) continue;
-            double d2, angle = axis_angle(E, c->xyz + 3 * (size_t)q, &d2);
-            if (d2 < reach2 && !isnan(angle)) block_around(c, angle);
+            double d2, rq, angle = axis_coords(E, c->xyz + 3 * (size_t)q, &d2, &rq);
+            if (isnan(angle)) continue;
+            double f = apex_height(d2, rq, l2);
+            if (isfinite(f)) block_point(c, angle, f, l2);
         }
-        if (c->blocked == c->bins) return 1;
-        if ((double)r * c->grid->cell >= reach) return 0;
+        double H = max_limit(c);
+        if (H < h_min) return 1;
+        double need = H + sqrt(H * H + l2);
+        if ((double)r * c->grid->cell >= need * (1 + 1e-7)) return 0;
     }
 }
 
@@ -161,10 +190,10 @@ static int third_vertex_ok(const g3_ctx *c, const g3_edge *E, uint32_t q)
     double db[3] = {p[0] - pb[0], p[1] - pb[1], p[2] - pb[2]};
     double shortest = E->len2 * (1 - 1e-9);
     if (dot3(da, da) < shortest || dot3(db, db) < shortest) return 0; /* ab is not shortest */
-    double d2, angle = axis_angle(E, p, &d2);
+    double d2, rq, angle = axis_coords(E, p, &d2, &rq);
     if (isnan(angle)) return 1;
-    size_t k = bin_of(c, angle);
-    return !(c->mask[k >> 6] >> (k & 63) & 1);
+    double l2 = 0.25 * E->len2, h = apex_height(d2, rq, l2), H = c->limit[bin_of(c, angle)];
+    return !(h > H + 1e-7 * (fabs(h) + fabs(H) + sqrt(l2)));
 }
 
 static int sort3_check(g3_ctx *c, uint32_t a, uint32_t b, uint32_t q, graph_builder *out)
@@ -180,20 +209,19 @@ static int sort3_check(g3_ctx *c, uint32_t a, uint32_t b, uint32_t q, graph_buil
 static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
 {
     g3_edge E;
-    if (edge_init(&E, c->xyz, a, b)) {
-        int r = edge_blocked(c, &E);
-        if (r) return r < 0 ? -1 : 0;
-    } else {
+    if (!edge_init(&E, c->xyz, a, b)) {
         /* No usable frame: no filter, every third vertex is checked. */
-        E.a = a;
-        E.b = b;
-        E.len2 = NAN;
-        memset(c->mask, 0, c->words * sizeof *c->mask);
+        for (uint32_t q = 0; q < c->n; q++)
+            if (q != a && q != b && sort3_check(c, a, b, q, out) < 0) return -1;
+        return 0;
     }
-    for (uint32_t q = 0; q < c->n; q++) {
-        if (q == a || q == b) continue;
-        int keep = isnan(E.len2) ? 1 : third_vertex_ok(c, &E, q);
-        if (keep && sort3_check(c, a, b, q, out) < 0) return -1;
+    int r = scan_edge(c, &E);
+    if (r) return r < 0 ? -1 : 0;
+    const uint32_t *items = c->seen.data;
+    for (size_t i = 0; i < c->seen.count; i++) {
+        uint32_t q = items[i];
+        if (q != a && q != b && third_vertex_ok(c, &E, q) && sort3_check(c, a, b, q, out) < 0)
+            return -1;
     }
     return 0;
 }
@@ -211,17 +239,25 @@ fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p
     c.params = p;
     c.kappa = kappa;
     double g = 1 / (1 - kappa);
-    c.theta = atan(1 / (2 * sqrt(g * g - 1))) * (1 - 1e-6);
-    /* theta/2-wide bins, so a blocking point always covers at least its own bin's neighbours;
-     * kappa near 1 makes theta tiny and the bins many, capped (wider bins are still safe: a
-     * point then blocks only the bins wholly inside its arc, possibly none). */
-    double nb = ceil(2 * G3_PI / (0.5 * c.theta));
-    c.bins = nb > 4096 || !(nb >= 1) ? 4096 : (size_t)nb;
+    c.s = sqrt(g * g - 1);
+    /* Bins of width atan(1/s)/8: a point reaches 7 bins each side; a vertex of a bin d away
+     * is at most (d+1) widths from it. Few bins for kappa near 0 (s near 0, wide arcs). */
+    double arc = atan(1 / c.s), nb = ceil(2 * G3_PI / (arc / G3_BINS_PER_ARC));
+    c.bins = nb > 4096 || !(nb >= 1) ? 4096 : nb < 8 ? 8 : (size_t)nb;
     c.width = 2 * G3_PI / (double)c.bins;
-    c.words = (c.bins + 63) / 64;
-    c.mask = calloc(c.words, sizeof *c.mask);
-    if (!c.mask) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    c.reach = 0;
+    for (int d = 0; d <= G3_MAX_REACH; d++) {
+        double phi = (d + 1) * c.width + 1e-9;
+        c.ca[d] = cos(phi);
+        c.cb[d] = c.s * sin(phi);
+        /* A vertex of the bin can be at an angle beyond the arc: no blocking there. */
+        if (!(phi < G3_PI / 2 && c.ca[d] > c.cb[d] * (1 + 1e-9))) break;
+        c.reach = d;
+    }
+    c.limit = fl_alloc_array(c.bins, sizeof *c.limit);
+    if (!c.limit) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     fl_vec_init(&c.ring, sizeof(uint32_t));
+    fl_vec_init(&c.seen, sizeof(uint32_t));
     fl_vec_init(&c.scan, sizeof(uint32_t));
     fl_status st = FL_OK;
     for (uint32_t i = 0; i < c.n && st == FL_OK; i++) {
@@ -237,7 +273,8 @@ fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p
             }
     }
     fl_vec_free(&c.ring);
+    fl_vec_free(&c.seen);
     fl_vec_free(&c.scan);
-    free(c.mask);
+    free(c.limit);
     return st;
 }

@@ -43,7 +43,10 @@ typedef struct g3_ctx {
     double width;     /* 2 pi / bins */
     int reach;        /* bins a point can block on each side of its own */
     double ca[G3_MAX_REACH + 1], cb[G3_MAX_REACH + 1]; /* cos, s sin of the worst angle */
+    double kill[G3_MAX_REACH + 1]; /* f/l below which a point's threshold is under l/sqrt(3) */
     double *limit;    /* H[j] of the current edge */
+    unsigned char *dead; /* bins whose limit is below l/sqrt(3) (no third vertex there) */
+    size_t dead_count;
     fl_vec ring, seen, scan; /* point lists of grid rings */
 } g3_ctx;
 
@@ -122,13 +125,23 @@ static double threshold(double A, double B, double f, double l2)
 }
 
 /* Lowers H[j] with q's thresholds over the bins within reach of q's bin, each taken at the
- * farthest angle a third vertex of that bin can have from q (the threshold grows with |phi|). */
-static void block_point(g3_ctx *c, double angle, double f, double l2)
+ * farthest angle a third vertex of that bin can have from q (the threshold grows with |phi|).
+ * A bin whose threshold falls below l/sqrt(3) can hold no third vertex at all ("dead"); that
+ * is decided first, without the square root: threshold(f) < h_min iff f < g(h_min) =
+ * l (A - 2B)/sqrt(3), g increasing (see threshold). */
+static void block_point(g3_ctx *c, double angle, double f, double l, double l2)
 {
     long home = (long)bin_of(c, angle), nb = (long)c->bins;
     for (long d = -c->reach; d <= c->reach; d++) {
-        long k = ((home + d) % nb + nb) % nb;
+        long kk = home + d;
+        size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
+        if (c->dead[k]) continue;
         int far = d < 0 ? (int)-d : (int)d;
+        if (f < l * c->kill[far]) {
+            c->dead[k] = 1;
+            c->dead_count++;
+            continue;
+        }
         double h = threshold(c->ca[far], c->cb[far], f, l2);
         if (h < c->limit[k]) c->limit[k] = h;
     }
@@ -140,12 +153,12 @@ static double apex_height(double d2, double r, double l2)
     return (d2 - l2) / (2 * r);
 }
 
-/* The largest admissible h over all bins. */
+/* The largest admissible h over the live bins. */
 static double max_limit(const g3_ctx *c)
 {
     double h = -INFINITY;
     for (size_t k = 0; k < c->bins; k++)
-        if (!(c->limit[k] <= h)) h = c->limit[k]; /* NaN counts as unbounded */
+        if (!c->dead[k] && !(c->limit[k] <= h)) h = c->limit[k]; /* NaN: unbounded */
     return isnan(h) ? INFINITY : h;
 }
 
@@ -158,6 +171,8 @@ static int scan_edge(g3_ctx *c, const g3_edge *E)
     double h_min = l / sqrt(3.0) * (1 - 1e-7);
     for (size_t k = 0; k < c->bins; k++)
         c->limit[k] = INFINITY;
+    memset(c->dead, 0, c->bins);
+    c->dead_count = 0;
     c->seen.count = 0;
     for (size_t r = 0;; r++) {
         int beyond = 0;
@@ -171,8 +186,10 @@ static int scan_edge(g3_ctx *c, const g3_edge *E)
             double d2, rq, angle = axis_coords(E, c->xyz + 3 * (size_t)q, &d2, &rq);
             if (isnan(angle)) continue;
             double f = apex_height(d2, rq, l2);
-            if (isfinite(f)) block_point(c, angle, f, l2);
+            if (isfinite(f)) block_point(c, angle, f, l, l2);
+            if (c->dead_count == c->bins) return 1; /* typically within the first ring */
         }
+        if (c->dead_count == c->bins) return 1;
         double H = max_limit(c);
         if (H < h_min) return 1;
         double need = H + sqrt(H * H + l2);
@@ -192,7 +209,9 @@ static int third_vertex_ok(const g3_ctx *c, const g3_edge *E, uint32_t q)
     if (dot3(da, da) < shortest || dot3(db, db) < shortest) return 0; /* ab is not shortest */
     double d2, rq, angle = axis_coords(E, p, &d2, &rq);
     if (isnan(angle)) return 1;
-    double l2 = 0.25 * E->len2, h = apex_height(d2, rq, l2), H = c->limit[bin_of(c, angle)];
+    size_t k = bin_of(c, angle);
+    if (c->dead[k]) return 0;
+    double l2 = 0.25 * E->len2, h = apex_height(d2, rq, l2), H = c->limit[k];
     return !(h > H + 1e-7 * (fabs(h) + fabs(H) + sqrt(l2)));
 }
 
@@ -250,12 +269,20 @@ fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p
         double phi = (d + 1) * c.width + 1e-9;
         c.ca[d] = cos(phi);
         c.cb[d] = c.s * sin(phi);
+        /* g(h_min)/l with a margin for the rounding of f (relative 1e-8 of l). */
+        double k = (c.ca[d] - 2 * c.cb[d]) / sqrt(3.0);
+        c.kill[d] = k - 1e-7 * fabs(k) - 1e-8;
         /* A vertex of the bin can be at an angle beyond the arc: no blocking there. */
         if (!(phi < G3_PI / 2 && c.ca[d] > c.cb[d] * (1 + 1e-9))) break;
         c.reach = d;
     }
     c.limit = fl_alloc_array(c.bins, sizeof *c.limit);
-    if (!c.limit) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    c.dead = calloc(c.bins, 1);
+    if (!c.limit || !c.dead) {
+        free(c.limit);
+        free(c.dead);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    }
     fl_vec_init(&c.ring, sizeof(uint32_t));
     fl_vec_init(&c.seen, sizeof(uint32_t));
     fl_vec_init(&c.scan, sizeof(uint32_t));
@@ -276,5 +303,6 @@ fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p
     fl_vec_free(&c.seen);
     fl_vec_free(&c.scan);
     free(c.limit);
+    free(c.dead);
     return st;
 }

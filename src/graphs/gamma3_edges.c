@@ -47,7 +47,8 @@ typedef struct g3_ctx {
     double *limit;    /* H[j] of the current edge */
     unsigned char *dead; /* bins whose limit is below l/sqrt(3) (no third vertex there) */
     size_t dead_count;
-    fl_vec ring, seen, scan; /* point lists of grid rings */
+    fl_vec seen; /* the points of the rings scanned around the current edge's midpoint */
+    fl_vec scan; /* scratch of gamma_triangle_check */
 } g3_ctx;
 
 /* The current edge: endpoints, midpoint, squared length and an orthonormal frame (e, u1, u2). */
@@ -283,7 +284,6 @@ fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p
         free(c.dead);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     }
-    fl_vec_init(&c.ring, sizeof(uint32_t));
     fl_vec_init(&c.seen, sizeof(uint32_t));
     fl_vec_init(&c.scan, sizeof(uint32_t));
     fl_status st = FL_OK;
@@ -299,7 +299,6 @@ fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p
                 break;
             }
     }
-    fl_vec_free(&c.ring);
     fl_vec_free(&c.seen);
     fl_vec_free(&c.scan);
     free(c.limit);

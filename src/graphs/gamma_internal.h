@@ -135,8 +135,8 @@ fl_status gamma_lens_edges(const double *xy, size_t n, const fl_gamma_params *p,
                            const fl_graph_options *opt, graph_builder *b, fl_error *err);
 
 /* The non-Delaunay triangles (c1' < 0) of a 3D γ-graph whose parameters require c1' >= -kappa,
- * kappa < 1: Theorem 3.1's enumeration with each triangle's scan stopped once it is decided
- * (see gamma_triangles.c). */
+ * kappa < 1: candidates around each triangle's shortest edge (gamma3_edges.c), each decided by
+ * an early-stopped exact scan (gamma_triangles.c). */
 fl_status gamma_lens_triangles(const double *xyz, size_t n, const fl_gamma_params *p, double kappa,
                                const fl_graph_options *opt, graph_builder *b, fl_error *err);
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # γ-neighbourhood graph, c1 < 0 regime (docs/gamma.md, "Timings"): the non-Delaunay part
 # γ([-1,1],[-kappa,0^-]), kappa = 0.5, on uniform random points (bench/gamma_bench.c), built by
-# our output-sensitive search, by our Theorem 3.1 brute force (the peer: the only other method
+# our search (2D: output-sensitive lens search; 3D: shortest-edge candidates, docs/gamma.md),
+# by our Theorem 3.1 brute force (the peer: the only other method
 # that builds this graph), and our own Delaunay triangulation of the same points for scale.
 # Times are CPU seconds of one run (the machine is shared). Where a side cannot run at the
 # target size, its time is extrapolated with the exponent b of a least-squares fit of
@@ -14,7 +15,7 @@ source "$(dirname "$0")/../lib.sh"
 KAPPA=0.5
 SIZES_2D=${GAMMA_2D_SIZES:-"1000 3000 10000 30000 100000"}
 BRUTE_2D=${GAMMA_2D_BRUTE:-"250 500 1000"}
-SIZES_3D=${GAMMA_3D_SIZES:-"100 200 400 800"}
+SIZES_3D=${GAMMA_3D_SIZES:-"100 200 400 800 1600 3200"}
 BRUTE_3D=${GAMMA_3D_BRUTE:-"60 90 120 160"}
 
 # run MODE DIM N: CPU seconds and simplex count of one run ("cpu count").

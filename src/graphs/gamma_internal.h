@@ -135,8 +135,8 @@ fl_status gamma_lens_edges(const double *xy, size_t n, const fl_gamma_params *p,
                            const fl_graph_options *opt, graph_builder *b, fl_error *err);
 
 /* The non-Delaunay triangles (c1' < 0) of a 3D γ-graph whose parameters require c1' >= -kappa,
- * kappa < 1: Theorem 3.1's enumeration with each triangle's scan stopped once it is decided
- * (see gamma_triangles.c). */
+ * kappa < 1: candidates around each triangle's shortest edge (gamma3_edges.c), each decided by
+ * an early-stopped exact scan (gamma_triangles.c). */
 fl_status gamma_lens_triangles(const double *xyz, size_t n, const fl_gamma_params *p, double kappa,
                                const fl_graph_options *opt, graph_builder *b, fl_error *err);
 
@@ -163,5 +163,16 @@ int graph_grid_box(const graph_grid *g, const double *lo, const double *hi, fl_v
  * number appended, or -1 on allocation failure; 0 with *beyond set once the ring leaves the grid.
  */
 long graph_grid_ring(const graph_grid *g, const double *p, size_t ring, fl_vec *out, int *beyond);
+
+/* The exact decision for one triangle t (sorted indices) of the 3D non-Delaunay search: the
+ * early-decided witness scan of gamma_triangles.c; adds t to b when it is non-Delaunay and
+ * accepted. Returns 0, or -1 out of memory; `ring` is scratch. */
+int gamma_triangle_check(const graph_grid *g, const fl_gamma_params *p, double kappa,
+                         const uint32_t *t, fl_vec *ring, graph_builder *b);
+
+/* The candidate triangles of gamma_lens_triangles, from their shortest edge (gamma3_edges.c);
+ * each goes through gamma_triangle_check. */
+fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p, double kappa,
+                                const fl_graph_options *opt, graph_builder *b, fl_error *err);
 
 #endif /* FL_GAMMA_INTERNAL_H */

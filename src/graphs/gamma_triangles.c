@@ -1,8 +1,8 @@
-/* The non-Delaunay triangles (c1' < 0) of a 3D γ-graph, by Theorem 3.1's enumeration of every
- * triangle with each triangle's scan of the points stopped as soon as it is decided (see
- * docs/gamma.md, "Construction").
+/* The exact decision for the non-Delaunay triangles (c1' < 0) of a 3D γ-graph: each candidate
+ * triangle of gamma3_edges.c (generated around its shortest edge) is decided by a scan of the
+ * points stopped as soon as the triangle is decided (see docs/gamma.md, "Construction").
  *
- * Theorem 3.1 tests every triangle against every point: O(N^4). The parameters accept only
+ * Theorem 3.1 tests every triangle against every point. The parameters accept only
  * triangles with c1' >= -kappa, whose largest empty neighbourhood contains the symmetric lens
  * N_γ(-kappa,-kappa) = B(-T) ∩ B(T) (Lemma 3.2; T = r*sqrt(g^2-1), g = 1/(1-kappa), as in
  * gamma_lens.c). The points are visited in rings of grid cells around the circumcentre, nearest
@@ -12,14 +12,10 @@
  *    points only widen the witness interval [tau(up), tau(lo)] of a non-Delaunay triangle
  *    (gamma_simplex.c), so such a rejection is final;
  *  - once every point that could still beat a witness has been seen (needed_radius).
- * The lens contains the ball of radius r*phi around the circumcentre, so almost every triangle
- * is rejected by the first points of its first rings. An accepted triangle's witnesses are the
- * global ones, so its summary, and hence c0', c1', are the brute force's bit for bit; floating
- * comparisons with kappa keep a margin that sends borderline values to the full scan.
- *
- * Cost: O(N^3) frames plus, for each triangle not rejected at once, the points within a few
- * circumradii of it, instead of O(N^4). The N^3 enumeration remains: the 2D sector filter has
- * no 3D analogue that stays complete near the convex hull (docs/gamma.md, "Limits"). */
+ * The lens contains the ball of radius r*phi around the circumcentre, so almost every rejected
+ * triangle is rejected by the first points of its first rings. An accepted triangle's witnesses
+ * are the global ones, so its summary, and hence c0', c1', are the brute force's bit for bit;
+ * floating comparisons with kappa keep a margin that sends borderline values to the full scan. */
 #include <math.h>
 #include <string.h>
 
@@ -99,8 +95,8 @@ static int scan_triangle(const graph_grid *g, const gamma_frame *f, double kappa
     }
 }
 
-static int check_triangle(const graph_grid *g, const fl_gamma_params *p, double kappa,
-                          const uint32_t *t, fl_vec *ring, graph_builder *b)
+int gamma_triangle_check(const graph_grid *g, const fl_gamma_params *p, double kappa,
+                         const uint32_t *t, fl_vec *ring, graph_builder *b)
 {
     gamma_frame f;
     if (!gamma_frame_init(&f, g->coords, 3, t)) return 0;
@@ -117,30 +113,10 @@ static int check_triangle(const graph_grid *g, const fl_gamma_params *p, double 
 fl_status gamma_lens_triangles(const double *xyz, size_t n, const fl_gamma_params *p, double kappa,
                                const fl_graph_options *opt, graph_builder *b, fl_error *err)
 {
-    fl_progress_fn progress = opt ? opt->progress : NULL;
-    void *user = opt ? opt->progress_user : NULL;
     graph_grid g;
     fl_status st = graph_grid_build(&g, xyz, n, 3, err);
     if (st != FL_OK) return st;
-    fl_vec ring;
-    fl_vec_init(&ring, sizeof(uint32_t));
-    for (uint32_t i = 0; i < n && st == FL_OK; i++) {
-        /* Triangles with smallest vertex i: (n-i)^2/2 of them, so report the cubic share. */
-        double done = 1 - pow(1 - (double)i / (double)n, 3);
-        if (fl_progress(progress, user, "gamma triangles", done)) {
-            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
-            break;
-        }
-        for (uint32_t j = i + 1; j < n && st == FL_OK; j++)
-            for (uint32_t k = j + 1; k < n; k++) {
-                uint32_t t[3] = {i, j, k};
-                if (check_triangle(&g, p, kappa, t, &ring, b) < 0) {
-                    st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-                    break;
-                }
-            }
-    }
-    fl_vec_free(&ring);
+    st = gamma3_edge_triangles(&g, p, kappa, opt, b, err);
     graph_grid_free(&g);
     return st;
 }

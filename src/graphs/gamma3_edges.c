@@ -1,0 +1,307 @@
+/* Candidate generation for the non-Delaunay triangles (c1' < 0) of a 3D γ-graph from their
+ * shortest edge (docs/gamma.md, "Construction", 3D; thesis ch. 3, Lemma 3.2).
+ *
+ * Let abc be accepted (c1' >= -kappa, kappa < 1) and non-Delaunay. Its symmetric lens
+ * Λ = B(C - Tn) ∩ B(C + Tn) is empty (Lemma 3.2; C, R circumcentre and circumradius, n the unit
+ * normal, s = sqrt(g^2-1), g = 1/(1-kappa), T = sR, both balls of radius gR through the
+ * circumcircle). Take ab a shortest edge: length L = 2l, midpoint m, and cylindrical
+ * coordinates around the line ab (axial x, radius r, angle theta). The angle at c is at most
+ * 60°, so C lies on c's side of ab: at height h >= l/sqrt(3) above m in the half-plane of c,
+ * with h = (|c-m|^2 - l^2) / (2 r_c) and R^2 = h^2 + l^2.
+ *
+ * Lens test (the proof is in docs/gamma.md): a point q lies in the open Λ iff
+ *     f_q := (|q-m|^2 - l^2) / (2 r_q)  <  h cos(phi) - s sqrt(h^2 + l^2) |sin(phi)|,
+ * phi the angle between q and c around ab. The right side increases with h when
+ * |phi| < atan(1/s) (30° for kappa = 0.5), so q blocks every third vertex of its angle range
+ * whose h exceeds a threshold h*(f_q, phi), and no other. Per angle bin the smallest threshold
+ * H[j] over the points seen bounds the admissible h: the edge is dead when every H[j] is below
+ * l/sqrt(3), and the third vertices have h_c <= H[bin(c)], hence |c-m| <= H + sqrt(H^2 + l^2):
+ * the ring scan around m stops there, and the points it saw are the only candidates.
+ *
+ * The filters are floating and keep a candidate whenever in doubt (worst angle of a bin,
+ * relative slack, ill-conditioned angles ignored); each candidate is then decided by
+ * gamma_triangle_check, the exact early-decided witness scan, so the output and its (c0', c1')
+ * are the brute force's. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "graphs/gamma_internal.h"
+
+#define G3_PI 3.14159265358979323846
+#define G3_BINS_PER_ARC 8 /* bins per blocking half-arc atan(1/s) */
+#define G3_MAX_REACH 8
+
+typedef struct g3_ctx {
+    const graph_grid *grid;
+    const double *xyz;
+    size_t n;
+    const fl_gamma_params *params;
+    double kappa;
+    double s;         /* sqrt(g^2 - 1) */
+    size_t bins;      /* angle bins around an edge */
+    double width;     /* 2 pi / bins */
+    int reach;        /* bins a point can block on each side of its own */
+    double ca[G3_MAX_REACH + 1], cb[G3_MAX_REACH + 1]; /* cos, s sin of the worst angle */
+    double kill[G3_MAX_REACH + 1]; /* f/l below which a point's threshold is under l/sqrt(3) */
+    double *limit;    /* H[j] of the current edge */
+    unsigned char *dead; /* bins whose limit is below l/sqrt(3) (no third vertex there) */
+    size_t dead_count;
+    fl_vec seen; /* the points of the rings scanned around the current edge's midpoint */
+    fl_vec scan; /* scratch of gamma_triangle_check */
+} g3_ctx;
+
+/* The current edge: endpoints, midpoint, squared length and an orthonormal frame (e, u1, u2). */
+typedef struct g3_edge {
+    uint32_t a, b;
+    double m[3], e[3], u1[3], u2[3], len2;
+} g3_edge;
+
+static double dot3(const double *x, const double *y)
+{
+    return x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+}
+
+/* Returns 0 when the edge's frame is not finite (the filters are then skipped). */
+static int edge_init(g3_edge *E, const double *xyz, uint32_t a, uint32_t b)
+{
+    const double *pa = xyz + 3 * (size_t)a, *pb = xyz + 3 * (size_t)b;
+    E->a = a;
+    E->b = b;
+    double d[3];
+    for (int k = 0; k < 3; k++) {
+        E->m[k] = 0.5 * (pa[k] + pb[k]);
+        d[k] = pb[k] - pa[k];
+    }
+    E->len2 = dot3(d, d);
+    double len = sqrt(E->len2);
+    if (!(len > 0) || !isfinite(E->len2)) return 0;
+    for (int k = 0; k < 3; k++)
+        E->e[k] = d[k] / len;
+    /* u1: e crossed with the axis of e's smallest component, u2 = e x u1. */
+    int s = 0;
+    for (int k = 1; k < 3; k++)
+        if (fabs(E->e[k]) < fabs(E->e[s])) s = k;
+    double axis[3] = {0, 0, 0};
+    axis[s] = 1;
+    E->u1[0] = E->e[1] * axis[2] - E->e[2] * axis[1];
+    E->u1[1] = E->e[2] * axis[0] - E->e[0] * axis[2];
+    E->u1[2] = E->e[0] * axis[1] - E->e[1] * axis[0];
+    double l1 = sqrt(dot3(E->u1, E->u1));
+    for (int k = 0; k < 3; k++)
+        E->u1[k] /= l1;
+    E->u2[0] = E->e[1] * E->u1[2] - E->e[2] * E->u1[1];
+    E->u2[1] = E->e[2] * E->u1[0] - E->e[0] * E->u1[2];
+    E->u2[2] = E->e[0] * E->u1[1] - E->e[1] * E->u1[0];
+    return 1;
+}
+
+/* The cylindrical coordinates of p around the edge: returns the angle in [-pi, pi], or NAN when
+ * it is ill-conditioned (p within 1e-6 |p - m| of the axis, or not finite); *dist2 = |p - m|^2,
+ * *radius = the distance from the axis. */
+static double axis_coords(const g3_edge *E, const double *p, double *dist2, double *radius)
+{
+    double d[3] = {p[0] - E->m[0], p[1] - E->m[1], p[2] - E->m[2]};
+    double x1 = dot3(d, E->u1), x2 = dot3(d, E->u2);
+    *dist2 = dot3(d, d);
+    double r2 = x1 * x1 + x2 * x2;
+    *radius = sqrt(r2);
+    if (!(r2 > 1e-12 * *dist2) || !isfinite(r2)) return NAN;
+    return atan2(x2, x1);
+}
+
+static size_t bin_of(const g3_ctx *c, double angle)
+{
+    double k = floor((angle + G3_PI) / c->width);
+    if (!(k >= 0)) return 0;
+    return k >= (double)c->bins ? c->bins - 1 : (size_t)k;
+}
+
+/* The smallest h from which q (with f = f_q) blocks third vertices at angle phi from it, phi
+ * given by A = cos(phi) > B = s |sin(phi)|: the root of A h - B sqrt(h^2 + l^2) = f. */
+static double threshold(double A, double B, double f, double l2)
+{
+    double C = A * A - B * B;
+    return (A * f + B * sqrt(f * f + C * l2)) / C;
+}
+
+/* Lowers H[j] with q's thresholds over the bins within reach of q's bin, each taken at the
+ * farthest angle a third vertex of that bin can have from q (the threshold grows with |phi|).
+ * A bin whose threshold falls below l/sqrt(3) can hold no third vertex at all ("dead"); that
+ * is decided first, without the square root: threshold(f) < h_min iff f < g(h_min) =
+ * l (A - 2B)/sqrt(3), g increasing (see threshold). */
+static void block_point(g3_ctx *c, double angle, double f, double l, double l2)
+{
+    long home = (long)bin_of(c, angle), nb = (long)c->bins;
+    for (long d = -c->reach; d <= c->reach; d++) {
+        long kk = home + d;
+        size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
+        if (c->dead[k]) continue;
+        int far = d < 0 ? (int)-d : (int)d;
+        if (f < l * c->kill[far]) {
+            c->dead[k] = 1;
+            c->dead_count++;
+            continue;
+        }
+        double h = threshold(c->ca[far], c->cb[far], f, l2);
+        if (h < c->limit[k]) c->limit[k] = h;
+    }
+}
+
+/* h of a third vertex at squared distance d2 from m and distance r from the axis. */
+static double apex_height(double d2, double r, double l2)
+{
+    return (d2 - l2) / (2 * r);
+}
+
+/* The largest admissible h over the live bins. */
+static double max_limit(const g3_ctx *c)
+{
+    double h = -INFINITY;
+    for (size_t k = 0; k < c->bins; k++)
+        if (!c->dead[k] && !(c->limit[k] <= h)) h = c->limit[k]; /* NaN: unbounded */
+    return isnan(h) ? INFINITY : h;
+}
+
+/* Scans rings around m, lowering the bin limits, until the edge is dead (returns 1) or every
+ * admissible third vertex has been seen (returns 0; the points are in c->seen); -1 out of
+ * memory. */
+static int scan_edge(g3_ctx *c, const g3_edge *E)
+{
+    double l2 = 0.25 * E->len2, l = sqrt(l2);
+    double h_min = l / sqrt(3.0) * (1 - 1e-7);
+    for (size_t k = 0; k < c->bins; k++)
+        c->limit[k] = INFINITY;
+    memset(c->dead, 0, c->bins);
+    c->dead_count = 0;
+    c->seen.count = 0;
+    for (size_t r = 0;; r++) {
+        int beyond = 0;
+        size_t first = c->seen.count;
+        if (graph_grid_ring(c->grid, E->m, r, &c->seen, &beyond) < 0) return -1;
+        if (beyond) return 0;
+        const uint32_t *items = c->seen.data;
+        for (size_t i = first; i < c->seen.count; i++) {
+            uint32_t q = items[i];
+            if (q == E->a || q == E->b) continue;
+            double d2, rq, angle = axis_coords(E, c->xyz + 3 * (size_t)q, &d2, &rq);
+            if (isnan(angle)) continue;
+            double f = apex_height(d2, rq, l2);
+            if (isfinite(f)) block_point(c, angle, f, l, l2);
+            if (c->dead_count == c->bins) return 1; /* typically within the first ring */
+        }
+        if (c->dead_count == c->bins) return 1;
+        double H = max_limit(c);
+        if (H < h_min) return 1;
+        double need = H + sqrt(H * H + l2);
+        if ((double)r * c->grid->cell >= need * (1 + 1e-7)) return 0;
+    }
+}
+
+/* Can q be the third vertex of an accepted triangle with shortest edge E? Keeps q whenever a
+ * floating comparison is in doubt. */
+static int third_vertex_ok(const g3_ctx *c, const g3_edge *E, uint32_t q)
+{
+    const double *p = c->xyz + 3 * (size_t)q, *pa = c->xyz + 3 * (size_t)E->a,
+                 *pb = c->xyz + 3 * (size_t)E->b;
+    double da[3] = {p[0] - pa[0], p[1] - pa[1], p[2] - pa[2]};
+    double db[3] = {p[0] - pb[0], p[1] - pb[1], p[2] - pb[2]};
+    double shortest = E->len2 * (1 - 1e-9);
+    if (dot3(da, da) < shortest || dot3(db, db) < shortest) return 0; /* ab is not shortest */
+    double d2, rq, angle = axis_coords(E, p, &d2, &rq);
+    if (isnan(angle)) return 1;
+    size_t k = bin_of(c, angle);
+    if (c->dead[k]) return 0;
+    double l2 = 0.25 * E->len2, h = apex_height(d2, rq, l2), H = c->limit[k];
+    return !(h > H + 1e-7 * (fabs(h) + fabs(H) + sqrt(l2)));
+}
+
+static int sort3_check(g3_ctx *c, uint32_t a, uint32_t b, uint32_t q, graph_builder *out)
+{
+    uint32_t t[3] = {a, b, q}, x;
+    if (t[0] > t[1]) x = t[0], t[0] = t[1], t[1] = x;
+    if (t[1] > t[2]) x = t[1], t[1] = t[2], t[2] = x;
+    if (t[0] > t[1]) x = t[0], t[0] = t[1], t[1] = x;
+    return gamma_triangle_check(c->grid, c->params, c->kappa, t, &c->scan, out);
+}
+
+/* Every accepted triangle with shortest edge ab goes to the exact check. */
+static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
+{
+    g3_edge E;
+    if (!edge_init(&E, c->xyz, a, b)) {
+        /* No usable frame: no filter, every third vertex is checked. */
+        for (uint32_t q = 0; q < c->n; q++)
+            if (q != a && q != b && sort3_check(c, a, b, q, out) < 0) return -1;
+        return 0;
+    }
+    int r = scan_edge(c, &E);
+    if (r) return r < 0 ? -1 : 0;
+    const uint32_t *items = c->seen.data;
+    for (size_t i = 0; i < c->seen.count; i++) {
+        uint32_t q = items[i];
+        if (q != a && q != b && third_vertex_ok(c, &E, q) && sort3_check(c, a, b, q, out) < 0)
+            return -1;
+    }
+    return 0;
+}
+
+fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p, double kappa,
+                                const fl_graph_options *opt, graph_builder *b, fl_error *err)
+{
+    fl_progress_fn progress = opt ? opt->progress : NULL;
+    void *user = opt ? opt->progress_user : NULL;
+    g3_ctx c;
+    memset(&c, 0, sizeof c);
+    c.grid = grid;
+    c.xyz = grid->coords;
+    c.n = grid->n;
+    c.params = p;
+    c.kappa = kappa;
+    double g = 1 / (1 - kappa);
+    c.s = sqrt(g * g - 1);
+    /* Bins of width atan(1/s)/8: a point reaches 7 bins each side; a vertex of a bin d away
+     * is at most (d+1) widths from it. Few bins for kappa near 0 (s near 0, wide arcs). */
+    double arc = atan(1 / c.s), nb = ceil(2 * G3_PI / (arc / G3_BINS_PER_ARC));
+    c.bins = nb > 4096 || !(nb >= 1) ? 4096 : nb < 8 ? 8 : (size_t)nb;
+    c.width = 2 * G3_PI / (double)c.bins;
+    c.reach = 0;
+    for (int d = 0; d <= G3_MAX_REACH; d++) {
+        double phi = (d + 1) * c.width + 1e-9;
+        c.ca[d] = cos(phi);
+        c.cb[d] = c.s * sin(phi);
+        /* g(h_min)/l with a margin for the rounding of f (relative 1e-8 of l). */
+        double k = (c.ca[d] - 2 * c.cb[d]) / sqrt(3.0);
+        c.kill[d] = k - 1e-7 * fabs(k) - 1e-8;
+        /* A vertex of the bin can be at an angle beyond the arc: no blocking there. */
+        if (!(phi < G3_PI / 2 && c.ca[d] > c.cb[d] * (1 + 1e-9))) break;
+        c.reach = d;
+    }
+    c.limit = fl_alloc_array(c.bins, sizeof *c.limit);
+    c.dead = calloc(c.bins, 1);
+    if (!c.limit || !c.dead) {
+        free(c.limit);
+        free(c.dead);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    }
+    fl_vec_init(&c.seen, sizeof(uint32_t));
+    fl_vec_init(&c.scan, sizeof(uint32_t));
+    fl_status st = FL_OK;
+    for (uint32_t i = 0; i < c.n && st == FL_OK; i++) {
+        double done = 1 - pow(1 - (double)i / (double)c.n, 2);
+        if (fl_progress(progress, user, "gamma triangles", done)) {
+            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+            break;
+        }
+        for (uint32_t j = i + 1; j < c.n; j++)
+            if (edge_triangles(&c, i, j, b) < 0) {
+                st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+                break;
+            }
+    }
+    fl_vec_free(&c.seen);
+    fl_vec_free(&c.scan);
+    free(c.limit);
+    free(c.dead);
+    return st;
+}

@@ -1146,7 +1146,8 @@ void fl_sweep_hits_free(fl_sweep_hits *hits);
  *    the precision it did reach.
  *  - budget_seconds > 0: stop refining after about that long and return the best intervals
  *    found so far (still certified; budget_exhausted = 1).
- *  - max_samples > 0: the same, after that many closest-point queries (0 = 100 million).
+ *  - max_samples > 0: the same, after that many samples (0 = 100 million; counted as in the
+ *    result's `samples`).
  *  - both_directions = 0 refines only as far as the symmetric distance needs (the direction
  *    that cannot reach the maximum keeps a wider but still certified interval, §6 "decide
  *    early which direction dominates"); nonzero refines each directed interval to precision.
@@ -1174,8 +1175,9 @@ typedef struct fl_hausdorff_field {
 /* The answer. h_ab = h(A,B) (points of A, distances to B), h_ba = h(B,A), hausdorff = the
  * symmetric distance, each [lower, upper]. where[0] is the sample point realizing
  * hausdorff[0] and where[1] its closest point on the other shape; where_on_b = 1 when
- * where[0] lies on B (h_ba dominates). samples counts closest-point queries (vertices
- * included); reached = hausdorff[1] - hausdorff[0]; precision = the absolute precision asked
+ * where[0] lies on B (h_ba dominates). samples counts the sample points measured: vertices and
+ * refinement points, whether by a closest-point query or, where that cannot change the bounds,
+ * against nearby elements of the other shape (docs/hausdorff.md); reached = hausdorff[1] - hausdorff[0]; precision = the absolute precision asked
  * for. budget_exhausted = 1 when the time or sample budget stopped the refinement before
  * reaching the precision. For 2D polylines z = 0. Free with fl_hausdorff_result_free. */
 typedef struct fl_hausdorff_result {

@@ -61,15 +61,16 @@ static int edge_on_boundary(const constrict3_state *s, uint32_t t, uint32_t u, u
     }
 }
 
-/* The removal key of region tetrahedron t, or NAN when t is not removable now. */
-static double removal_key(const constrict3_state *s, uint32_t t, fl_reconstruct3_criterion crit)
+/* The boundary-face mask of region tetrahedron t when t is removable now (the §5.3 rules and
+ * the kept faces of §5.7), else 0. */
+static unsigned removable_mask(const constrict3_state *s, uint32_t t)
 {
     const uint32_t *c = s->tet + 4 * (size_t)t;
     unsigned m = boundary_mask(s, t);
     int nb = popcount4(m);
     if (nb == 1) {
         int k = m == 1 ? 0 : m == 2 ? 1 : m == 4 ? 2 : 3;
-        if (s->bfaces[c[k]] > 0) return NAN;
+        if (s->bfaces[c[k]] > 0) return 0;
     } else if (nb == 2) {
         int a = -1, b = -1;
         for (int k = 0; k < 4; k++)
@@ -79,11 +80,20 @@ static double removal_key(const constrict3_state *s, uint32_t t, fl_reconstruct3
                 else
                     b = k;
             }
-        if (edge_on_boundary(s, t, c[a], c[b])) return NAN;
+        if (edge_on_boundary(s, t, c[a], c[b])) return 0;
     } else {
-        return NAN;
+        return 0;
     }
-    if (s->keepmask && (s->keepmask[t] & m)) return NAN; /* would delete a kept face (§5.7) */
+    if (s->keepmask && (s->keepmask[t] & m)) return 0; /* would delete a kept face (§5.7) */
+    return m;
+}
+
+/* The removal key of region tetrahedron t, or NAN when t is not removable now. */
+static double removal_key(const constrict3_state *s, uint32_t t, fl_reconstruct3_criterion crit)
+{
+    const uint32_t *c = s->tet + 4 * (size_t)t;
+    unsigned m = removable_mask(s, t);
+    if (!m) return NAN;
     double key = 0;
     if (crit == FL_RECONSTRUCT3_AREA_CHANGE)
         key = constrict3_area_change(s->p, c, m);
@@ -216,8 +226,9 @@ static fl_status constrict(constrict3_state *s, size_t unique, const fl_reconstr
         constrict3_entry e = constrict3_heap_pop(&h);
         if (s->removed[e.tet] || e.version != s->version[e.tet])
             continue; /* stale: a newer entry exists if it is still removable */
-        if (isnan(removal_key(s, e.tet, opt->criterion)))
-            continue; /* its vertex or edge joined the boundary meanwhile (Alg. 5.1 line 5) */
+        if (!removable_mask(s, e.tet))
+            continue; /* its vertex or edge joined the boundary meanwhile (Alg. 5.1 line 5); its
+                         key is the one pushed: a key changes only with the version */
         if (chasing) {
             int rc = constrict3_chase_before(s, &chase, &h, e, push_cb, &ctx, &out->flip_count);
             if (rc < 0) goto nomem;

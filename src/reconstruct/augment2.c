@@ -240,9 +240,10 @@ static int collect_graphs(const c2_state *s, csr *base, csr *dt)
             r = edges_add(&l, s->tri[3 * t + k], s->tri[3 * t + (k + 1) % 3]);
     if (!r) r = csr_build(base, s->n, l.e, l.count);
     l.count = 0;
+    const uint32_t *dtt = c2_dt_tri(s);
     for (size_t t = 0; t < s->dt_count && !r; t++)
         for (int k = 0; k < 3 && !r; k++)
-            r = edges_add(&l, s->dt_tri[3 * t + k], s->dt_tri[3 * t + (k + 1) % 3]);
+            r = edges_add(&l, dtt[3 * t + k], dtt[3 * t + (k + 1) % 3]);
     if (!r) r = csr_build(dt, s->n, l.e, l.count);
     free(l.e);
     return r;

@@ -12,6 +12,7 @@ static void state_free(c2_state *s)
 {
     free(s->tri);
     free(s->adj);
+    free(s->dt_copy);
     free(s->alive);
     free(s->vtri);
     free(s->on_boundary);
@@ -24,8 +25,20 @@ static void state_free(c2_state *s)
     memset(s, 0, sizeof *s);
 }
 
-/* Line 2 of Algorithm 5.1: the boundary of γ([-1,1],[0,1]) is the convex hull. */
-static fl_status state_init(c2_state *s, const double *xy, const fl_dt2 *dt,
+int c2_keep_dt(c2_state *s)
+{
+    if (s->dt_copy) return 0;
+    s->dt_copy = fl_alloc_array(3 * s->dt_count, sizeof *s->dt_copy);
+    if (!s->dt_copy) return -1;
+    memcpy(s->dt_copy, s->tri, 3 * s->dt_count * sizeof *s->tri);
+    return 0;
+}
+
+/* Line 2 of Algorithm 5.1: the boundary of γ([-1,1],[0,1]) is the convex hull. The state takes
+ * over the triangulation's triangles and neighbours instead of copying them (the 1e6-point
+ * curve spent a tenth of its constriction time in that copy and its page faults); a copy of
+ * the triangles is made only if flips are going to change them (c2_keep_dt). */
+static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
                             fl_reconstruct2_criterion criterion, fl_error *err)
 {
     size_t n = dt->point_count, tc = dt->triangle_count;
@@ -35,26 +48,20 @@ static fl_status state_init(c2_state *s, const double *xy, const fl_dt2 *dt,
     s->unique_count = dt->unique_count;
     s->tcount = tc;
     s->criterion = criterion;
-    s->dt_tri = dt->tri;
     s->dt_count = tc;
-    s->tri = fl_alloc_array(3 * tc, sizeof *s->tri);
-    s->adj = fl_alloc_array(3 * tc, sizeof *s->adj);
+    s->tri = dt->tri;
+    s->adj = dt->adj;
+    dt->tri = dt->adj = NULL;
     s->alive = fl_alloc_array(tc, 1);
     s->vtri = fl_alloc_array(n, sizeof *s->vtri);
     s->on_boundary = fl_calloc_array(n, 1);
     s->bnext = fl_alloc_array(n, sizeof *s->bnext);
     s->btri = fl_alloc_array(n, sizeof *s->btri);
-    s->keep_nb = fl_alloc_array(2 * n, sizeof *s->keep_nb);
-    if (!s->tri || !s->adj || !s->alive || !s->vtri || !s->on_boundary || !s->bnext || !s->btri ||
-        !s->keep_nb)
+    if (!s->alive || !s->vtri || !s->on_boundary || !s->bnext || !s->btri)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
-    memcpy(s->tri, dt->tri, 3 * tc * sizeof *s->tri);
-    memcpy(s->adj, dt->adj, 3 * tc * sizeof *s->adj);
     memset(s->alive, 1, tc);
     for (size_t i = 0; i < n; i++)
         s->vtri[i] = s->bnext[i] = s->btri[i] = C2_NONE;
-    for (size_t i = 0; i < 2 * n; i++)
-        s->keep_nb[i] = C2_NONE;
     for (size_t t = 0; t < tc; t++)
         for (int k = 0; k < 3; k++) {
             s->vtri[s->tri[3 * t + k]] = (uint32_t)t;
@@ -96,7 +103,7 @@ static void explain(const c2_state *s, const fl_reconstruct2_options *o, double 
                      inside, c0_tried, o->keep_count ? "; the kept edges may block it" : "");
         return;
     }
-    for (size_t v = 0; v < s->n; v++)
+    for (size_t v = 0; v < s->n && s->keep_nb; v++)
         for (int j = 0; j < 2; j++) {
             uint32_t w = s->keep_nb[2 * v + j];
             if (w == C2_NONE || s->bnext[v] == w || s->bnext[w] == v) continue;
@@ -119,14 +126,14 @@ static fl_status extract(const c2_state *s, const fl_dt2 *dt, fl_reconstruction2
     out->tri = fl_alloc_array(3 * live, sizeof *out->tri);
     if (!out->boundary || !out->tri)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
-    uint32_t v = dt->hull[0]; /* hull vertices never leave the boundary */
+    /* hull vertices never leave the boundary */
+    if (c2_boundary_order(s, dt->hull[0], out->boundary))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
     double area2 = 0;
-    for (size_t i = 0; i < s->boundary_count; i++) {
-        out->boundary[i] = v;
-        uint32_t w = s->bnext[v];
-        const double *p = c2_pt(s, v), *q = c2_pt(s, w);
+    for (size_t i = 0, m = s->boundary_count; i < m; i++) {
+        const double *p = c2_pt(s, out->boundary[i]);
+        const double *q = c2_pt(s, out->boundary[i + 1 < m ? i + 1 : 0]);
         area2 += p[0] * q[1] - p[1] * q[0];
-        v = w;
     }
     out->boundary_count = s->boundary_count;
     size_t j = 0;
@@ -161,9 +168,14 @@ static fl_status run(const double *xy, size_t n, const fl_reconstruct2_options *
     out->augmented_c0 = c0;
     explain(s, o, tried, out);
     if ((st = extract(s, dt, out, err)) != FL_OK) return st;
-    out->delaunay_count = dt->triangle_count;
-    out->delaunay_tri = dt->tri;
-    dt->tri = NULL;
+    out->delaunay_count = s->dt_count;
+    if (s->dt_copy) {
+        out->delaunay_tri = s->dt_copy;
+        s->dt_copy = NULL;
+    } else {
+        out->delaunay_tri = s->tri;
+        s->tri = NULL;
+    }
     return FL_OK;
 }
 

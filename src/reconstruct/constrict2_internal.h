@@ -21,10 +21,13 @@ typedef struct c2_entry {
     uint32_t a, b, c;
 } c2_entry;
 
-/* Binary min-heap ordered by key, ties by (a, b, c) so runs are deterministic. */
+/* Binary min-heap ordered by key, ties by the input indices of (a, b, c) (orig[], or the
+ * indices themselves when orig is NULL) so runs are deterministic and do not depend on the
+ * internal numbering. */
 typedef struct c2_heap {
     c2_entry *items;
     size_t count, capacity;
+    const uint32_t *orig;
 } c2_heap;
 
 int c2_heap_push(c2_heap *h, c2_entry e); /* 0, or -1 when out of memory */
@@ -37,8 +40,18 @@ void c2_heap_free(c2_heap *h);
  * kept edges) rewrite two slots in place, so the living triangles always tile the region inside
  * the current boundary. */
 typedef struct c2_state {
-    const double *xy;
-    size_t n, unique_count;
+    const double *xy;      /* n points in the internal numbering (see below) */
+    size_t n, unique_count; /* internal vertices: n == unique_count */
+    size_t n_input;        /* input points, duplicates included */
+    /* Internal numbering: the distinct points renumbered in the order they first appear in the
+     * Delaunay triangles, so that vertices close in the plane are close in memory (the
+     * triangulation lists its triangles in a spatially coherent order). Constriction runs
+     * along a front, and with the input numbering (shuffled points: random) every vertex it
+     * touched was a cache miss in each per-vertex array. Results are mapped back on output;
+     * ties between keys are broken by input indices, so the result does not depend on it. */
+    uint32_t *orig;        /* n: internal -> input index (the first of its duplicates) */
+    uint32_t *inv;         /* n_input: input index -> internal index */
+    double *xy_store;      /* owned storage behind xy */
     size_t tcount;
     uint32_t *tri, *adj;
     uint8_t *alive;

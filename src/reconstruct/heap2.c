@@ -5,12 +5,21 @@
 
 #include "reconstruct/constrict2_internal.h"
 
-static int entry_less(const c2_entry *x, const c2_entry *y)
+/* Ties (equal keys: common on grids) compare input indices, so the order of deletions is the
+ * same whatever the internal numbering. */
+static int tie_less(const c2_heap *h, const c2_entry *x, const c2_entry *y)
+{
+    const uint32_t *o = h->orig;
+    if (x->a != y->a) return o ? o[x->a] < o[y->a] : x->a < y->a;
+    if (x->b != y->b) return o ? o[x->b] < o[y->b] : x->b < y->b;
+    if (x->c != y->c) return o ? o[x->c] < o[y->c] : x->c < y->c;
+    return 0;
+}
+
+static inline int entry_less(const c2_heap *h, const c2_entry *x, const c2_entry *y)
 {
     if (x->key != y->key) return x->key < y->key;
-    if (x->a != y->a) return x->a < y->a;
-    if (x->b != y->b) return x->b < y->b;
-    return x->c < y->c;
+    return tie_less(h, x, y);
 }
 
 int c2_heap_push(c2_heap *h, c2_entry e)
@@ -25,7 +34,7 @@ int c2_heap_push(c2_heap *h, c2_entry e)
     size_t i = h->count++;
     while (i > 0) {
         size_t parent = (i - 1) / 2;
-        if (!entry_less(&e, &h->items[parent])) break;
+        if (!entry_less(h, &e, &h->items[parent])) break;
         h->items[i] = h->items[parent];
         i = parent;
     }
@@ -40,8 +49,8 @@ c2_entry c2_heap_pop(c2_heap *h)
     for (;;) {
         size_t child = 2 * i + 1;
         if (child >= n) break;
-        if (child + 1 < n && entry_less(&h->items[child + 1], &h->items[child])) child++;
-        if (!entry_less(&h->items[child], &last)) break;
+        if (child + 1 < n && entry_less(h, &h->items[child + 1], &h->items[child])) child++;
+        if (!entry_less(h, &h->items[child], &last)) break;
         h->items[i] = h->items[child];
         i = child;
     }
@@ -54,4 +63,5 @@ void c2_heap_free(c2_heap *h)
     free(h->items);
     h->items = NULL;
     h->count = h->capacity = 0;
+    h->orig = NULL;
 }

@@ -19,6 +19,9 @@ static void state_free(c2_state *s)
     free(s->bnext);
     free(s->btri);
     free(s->keep_nb);
+    free(s->orig);
+    free(s->inv);
+    free(s->xy_store);
     free(s->g_start);
     free(s->g_nb);
     c2_heap_free(&s->heap);
@@ -34,6 +37,41 @@ int c2_keep_dt(c2_state *s)
     return 0;
 }
 
+/* The internal numbering (constrict2_internal.h): distinct points in the order of their first
+ * appearance in the triangles, which are rewritten to it; the points are gathered in that
+ * order. FL_ERR_ALGORITHM if a distinct point is in no triangle (the triangulation would be
+ * broken). */
+static fl_status renumber(c2_state *s, const double *xy, const fl_dt2 *dt, fl_error *err)
+{
+    size_t n = dt->point_count, u = dt->unique_count, k = 0;
+    s->orig = fl_alloc_array(u, sizeof *s->orig);
+    s->inv = fl_alloc_array(n, sizeof *s->inv);
+    s->xy_store = fl_alloc_array(u, 2 * sizeof *s->xy_store);
+    if (!s->orig || !s->inv || !s->xy_store)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
+    memset(s->inv, 0xff, n * sizeof *s->inv);
+    for (size_t i = 0; i < 3 * s->tcount; i++) {
+        uint32_t v = s->tri[i];
+        if (s->inv[v] == C2_NONE) {
+            if (k == u) break;
+            s->inv[v] = (uint32_t)k;
+            s->orig[k] = v;
+            s->xy_store[2 * k] = xy[2 * (size_t)v];
+            s->xy_store[2 * k + 1] = xy[2 * (size_t)v + 1];
+            k++;
+        }
+        s->tri[i] = s->inv[v];
+    }
+    if (k != u)
+        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
+                       "%zu of %zu distinct points are in no Delaunay triangle", u - k, u);
+    for (size_t v = 0; v < n; v++)
+        if (s->inv[v] == C2_NONE) s->inv[v] = s->inv[dt->duplicate_of[v]];
+    s->xy = s->xy_store;
+    s->heap.orig = s->orig;
+    return FL_OK;
+}
+
 /* Line 2 of Algorithm 5.1: the boundary of γ([-1,1],[0,1]) is the convex hull. The state takes
  * over the triangulation's triangles and neighbours instead of copying them (the 1e6-point
  * curve spent a tenth of its constriction time in that copy and its page faults); a copy of
@@ -41,17 +79,19 @@ int c2_keep_dt(c2_state *s)
 static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
                             fl_reconstruct2_criterion criterion, fl_error *err)
 {
-    size_t n = dt->point_count, tc = dt->triangle_count;
+    size_t n = dt->unique_count, tc = dt->triangle_count;
     memset(s, 0, sizeof *s);
-    s->xy = xy;
     s->n = n;
-    s->unique_count = dt->unique_count;
+    s->n_input = dt->point_count;
+    s->unique_count = n;
     s->tcount = tc;
     s->criterion = criterion;
     s->dt_count = tc;
     s->tri = dt->tri;
     s->adj = dt->adj;
     dt->tri = dt->adj = NULL;
+    fl_status st = renumber(s, xy, dt, err);
+    if (st != FL_OK) return st;
     s->alive = fl_alloc_array(tc, 1);
     s->vtri = fl_alloc_array(n, sizeof *s->vtri);
     s->on_boundary = fl_calloc_array(n, 1);
@@ -68,9 +108,9 @@ static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
             if (s->adj[3 * t + k] == C2_NONE) s->btri[s->tri[3 * t + (k + 1) % 3]] = (uint32_t)t;
         }
     for (size_t i = 0; i < dt->hull_count; i++) {
-        uint32_t v = dt->hull[i];
+        uint32_t v = s->inv[dt->hull[i]];
         s->on_boundary[v] = 1;
-        s->bnext[v] = dt->hull[(i + 1) % dt->hull_count];
+        s->bnext[v] = s->inv[dt->hull[(i + 1) % dt->hull_count]];
     }
     s->boundary_count = dt->hull_count;
     return FL_OK;
@@ -79,7 +119,7 @@ static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
 static fl_status push_hull(c2_state *s, const fl_dt2 *dt, fl_error *err)
 {
     for (size_t i = 0; i < dt->hull_count; i++)
-        if (c2_push_candidates(s, dt->hull[i]))
+        if (c2_push_candidates(s, s->inv[dt->hull[i]]))
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the heap");
     return FL_OK;
 }
@@ -103,16 +143,19 @@ static void explain(const c2_state *s, const fl_reconstruct2_options *o, double 
                      inside, c0_tried, o->keep_count ? "; the kept edges may block it" : "");
         return;
     }
-    for (size_t v = 0; v < s->n && s->keep_nb; v++)
+    for (size_t i = 0; i < s->n_input && s->keep_nb; i++) {
+        uint32_t v = s->inv[i];
+        if (s->orig[v] != i) continue; /* a duplicate */
         for (int j = 0; j < 2; j++) {
-            uint32_t w = s->keep_nb[2 * v + j];
+            uint32_t w = s->keep_nb[2 * (size_t)v + j];
             if (w == C2_NONE || s->bnext[v] == w || s->bnext[w] == v) continue;
             snprintf(out->reason, sizeof out->reason,
                      "kept edge %zu-%u ends up inside the polygon, not on its boundary: no "
                      "constriction keeps it",
-                     v, w);
+                     i, s->orig[w]);
             return;
         }
+    }
     out->all_on_boundary = 1;
 }
 
@@ -127,7 +170,7 @@ static fl_status extract(const c2_state *s, const fl_dt2 *dt, fl_reconstruction2
     if (!out->boundary || !out->tri)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
     /* hull vertices never leave the boundary */
-    if (c2_boundary_order(s, dt->hull[0], out->boundary))
+    if (c2_boundary_order(s, s->inv[dt->hull[0]], out->boundary))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
     double area2 = 0;
     for (size_t i = 0, m = s->boundary_count; i < m; i++) {
@@ -135,10 +178,16 @@ static fl_status extract(const c2_state *s, const fl_dt2 *dt, fl_reconstruction2
         const double *q = c2_pt(s, out->boundary[i + 1 < m ? i + 1 : 0]);
         area2 += p[0] * q[1] - p[1] * q[0];
     }
+    for (size_t i = 0; i < s->boundary_count; i++)
+        out->boundary[i] = s->orig[out->boundary[i]];
     out->boundary_count = s->boundary_count;
     size_t j = 0;
     for (size_t t = 0; t < s->tcount; t++)
-        if (s->alive[t]) memcpy(out->tri + 3 * j++, s->tri + 3 * t, 3 * sizeof *out->tri);
+        if (s->alive[t]) {
+            for (int k = 0; k < 3; k++)
+                out->tri[3 * j + k] = s->orig[s->tri[3 * t + k]];
+            j++;
+        }
     out->triangle_count = live;
     out->area = area2 / 2;
     return FL_OK;
@@ -152,7 +201,7 @@ static fl_status run(const double *xy, size_t n, const fl_reconstruct2_options *
     if (st != FL_OK) return st;
     if ((st = state_init(s, xy, dt, o->criterion, err)) != FL_OK) return st;
     if (o->keep_count &&
-        (st = c2_keep_edges(s, dt->duplicate_of, o->keep, o->keep_count, err)) != FL_OK)
+        (st = c2_keep_edges(s, s->inv, o->keep, o->keep_count, err)) != FL_OK)
         return st;
     if ((st = push_hull(s, dt, err)) != FL_OK) return st;
     if ((st = c2_constrict(s, o->progress, o->progress_user, err)) != FL_OK) return st;
@@ -169,13 +218,11 @@ static fl_status run(const double *xy, size_t n, const fl_reconstruct2_options *
     explain(s, o, tried, out);
     if ((st = extract(s, dt, out, err)) != FL_OK) return st;
     out->delaunay_count = s->dt_count;
-    if (s->dt_copy) {
-        out->delaunay_tri = s->dt_copy;
-        s->dt_copy = NULL;
-    } else {
-        out->delaunay_tri = s->tri;
-        s->tri = NULL;
-    }
+    uint32_t **dtt = s->dt_copy ? &s->dt_copy : &s->tri;
+    for (size_t i = 0; i < 3 * s->dt_count; i++)
+        (*dtt)[i] = s->orig[(*dtt)[i]];
+    out->delaunay_tri = *dtt;
+    *dtt = NULL;
     return FL_OK;
 }
 

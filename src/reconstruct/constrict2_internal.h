@@ -21,8 +21,8 @@ typedef struct c2_entry {
     uint32_t a, b, c;
 } c2_entry;
 
-/* Binary min-heap ordered by key, ties by the input indices of (a, b, c) (orig[], or the
- * indices themselves when orig is NULL) so runs are deterministic and do not depend on the
+/* 4-ary min-heap (heap2.c) ordered by key, ties by the input indices of (a, b, c) (orig[], or
+ * the indices themselves when orig is NULL), so runs are deterministic and do not depend on the
  * internal numbering. */
 typedef struct c2_heap {
     c2_entry *items;

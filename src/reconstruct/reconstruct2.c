@@ -50,21 +50,24 @@ static fl_status renumber(c2_state *s, const double *xy, const fl_dt2 *dt, fl_er
     if (!s->orig || !s->inv || !s->xy_store)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
     memset(s->inv, 0xff, n * sizeof *s->inv);
-    for (size_t i = 0; i < 3 * s->tcount; i++) {
+    int broken = 0; /* more vertices than distinct points */
+    for (size_t i = 0; i < 3 * s->tcount && !broken; i++) {
         uint32_t v = s->tri[i];
         if (s->inv[v] == C2_NONE) {
-            if (k == u) break;
+            if ((broken = k == u)) break;
             s->inv[v] = (uint32_t)k;
-            s->orig[k] = v;
-            s->xy_store[2 * k] = xy[2 * (size_t)v];
-            s->xy_store[2 * k + 1] = xy[2 * (size_t)v + 1];
-            k++;
+            s->orig[k++] = v;
         }
         s->tri[i] = s->inv[v];
     }
-    if (k != u)
+    /* Gathered in a loop of its own: independent loads the processor can overlap. */
+    for (size_t j = 0; j < k; j++) {
+        s->xy_store[2 * j] = xy[2 * (size_t)s->orig[j]];
+        s->xy_store[2 * j + 1] = xy[2 * (size_t)s->orig[j] + 1];
+    }
+    if (k != u || broken)
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
-                       "%zu of %zu distinct points are in no Delaunay triangle", u - k, u);
+                       "the Delaunay triangles do not use the %zu distinct points once each", u);
     for (size_t v = 0; v < n; v++)
         if (s->inv[v] == C2_NONE) s->inv[v] = s->inv[dt->duplicate_of[v]];
     s->xy = s->xy_store;

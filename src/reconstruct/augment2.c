@@ -281,6 +281,7 @@ fl_status c2_augment(c2_state *s, int levels, double *c0_used, fl_progress_fn pr
     scratch sc[2] = {{0}, {0}};
     fl_status st = FL_OK;
     *c0_used = NAN;
+    if (c2_keep_dt(s)) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for flips");
     for (int i = 0; i < 2; i++) {
         sc[i].stamp = fl_calloc_array(s->n, sizeof(uint32_t));
         sc[i].queue = fl_alloc_array(s->n + 2, sizeof(uint32_t));

@@ -55,7 +55,8 @@ typedef struct c2_state {
     size_t tcount;
     uint32_t *tri, *adj;
     uint8_t *alive;
-    uint32_t *vtri;        /* per vertex: a living triangle at it (C2_NONE for duplicates) */
+    uint32_t *vtri;        /* per vertex: a living triangle at it; only kept up to date once
+                              flips may happen (c2_keep_dt makes it), NULL before */
     uint8_t *on_boundary;  /* per vertex */
     uint32_t *bnext;       /* per boundary vertex: the next boundary vertex (counterclockwise) */
     uint32_t *btri;        /* per boundary vertex v: the living triangle with edge v->bnext[v] */
@@ -104,8 +105,10 @@ static inline const uint32_t *c2_dt_tri(const c2_state *s)
     return s->dt_copy ? s->dt_copy : s->tri;
 }
 
-/* reconstruct2.c: keeps a copy of the Delaunay triangulation before tri is first flipped (the
- * result returns it, augmentation reads it). 0, or -1 when out of memory. */
+/* reconstruct2.c: prepares for flips, once: keeps a copy of the Delaunay triangulation before
+ * tri is first flipped (the result returns it, augmentation reads it) and makes vtri, which
+ * only the flips' walks need (plain constriction never reads it). 0, or -1 when out of
+ * memory. */
 int c2_keep_dt(c2_state *s);
 
 /* Corner of triangle t holding vertex v, or -1. */

@@ -31,16 +31,21 @@ static void state_free(c2_state *s)
 int c2_keep_dt(c2_state *s)
 {
     if (s->dt_copy) return 0;
+    if (!s->vtri) s->vtri = fl_alloc_array(s->n, sizeof *s->vtri);
+    if (!s->vtri) return -1;
     s->dt_copy = fl_alloc_array(3 * s->dt_count, sizeof *s->dt_copy);
     if (!s->dt_copy) return -1;
     memcpy(s->dt_copy, s->tri, 3 * s->dt_count * sizeof *s->tri);
+    for (size_t v = 0; v < s->n; v++)
+        s->vtri[v] = C2_NONE;
+    for (size_t t = 0; t < s->tcount; t++)
+        for (int k = 0; k < 3 && s->alive[t]; k++)
+            s->vtri[s->tri[3 * t + k]] = (uint32_t)t;
     return 0;
 }
 
-/* The internal numbering (constrict2_internal.h): distinct points in the order of their first
- * appearance in the triangles, which are rewritten to it; the points are gathered in that
- * order. FL_ERR_ALGORITHM if a distinct point is in no triangle (the triangulation would be
- * broken). */
+enum { PREFETCH = 16 }; /* entries ahead in the renumbering's random-access loops */
+
 static fl_status renumber(c2_state *s, const double *xy, const fl_dt2 *dt, fl_error *err)
 {
     size_t n = dt->point_count, u = dt->unique_count, k = 0;
@@ -51,7 +56,11 @@ static fl_status renumber(c2_state *s, const double *xy, const fl_dt2 *dt, fl_er
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
     memset(s->inv, 0xff, n * sizeof *s->inv);
     int broken = 0; /* more vertices than distinct points */
-    for (size_t i = 0; i < 3 * s->tcount && !broken; i++) {
+    size_t m = 3 * s->tcount;
+    for (size_t i = 0; i < m && !broken; i++) {
+        /* inv[] is indexed by input index (random in memory for shuffled input): ask for the
+         * lines a few entries ahead. */
+        if (i + PREFETCH < m) __builtin_prefetch(&s->inv[s->tri[i + PREFETCH]]);
         uint32_t v = s->tri[i];
         if (s->inv[v] == C2_NONE) {
             if ((broken = k == u)) break;
@@ -62,6 +71,7 @@ static fl_status renumber(c2_state *s, const double *xy, const fl_dt2 *dt, fl_er
     }
     /* Gathered in a loop of its own: independent loads the processor can overlap. */
     for (size_t j = 0; j < k; j++) {
+        if (j + PREFETCH < k) __builtin_prefetch(&xy[2 * (size_t)s->orig[j + PREFETCH]]);
         s->xy_store[2 * j] = xy[2 * (size_t)s->orig[j]];
         s->xy_store[2 * j + 1] = xy[2 * (size_t)s->orig[j] + 1];
     }
@@ -96,20 +106,17 @@ static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
     fl_status st = renumber(s, xy, dt, err);
     if (st != FL_OK) return st;
     s->alive = fl_alloc_array(tc, 1);
-    s->vtri = fl_alloc_array(n, sizeof *s->vtri);
     s->on_boundary = fl_calloc_array(n, 1);
     s->bnext = fl_alloc_array(n, sizeof *s->bnext);
     s->btri = fl_alloc_array(n, sizeof *s->btri);
-    if (!s->alive || !s->vtri || !s->on_boundary || !s->bnext || !s->btri)
+    if (!s->alive || !s->on_boundary || !s->bnext || !s->btri)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
     memset(s->alive, 1, tc);
     for (size_t i = 0; i < n; i++)
-        s->vtri[i] = s->bnext[i] = s->btri[i] = C2_NONE;
+        s->bnext[i] = s->btri[i] = C2_NONE;
     for (size_t t = 0; t < tc; t++)
-        for (int k = 0; k < 3; k++) {
-            s->vtri[s->tri[3 * t + k]] = (uint32_t)t;
+        for (int k = 0; k < 3; k++)
             if (s->adj[3 * t + k] == C2_NONE) s->btri[s->tri[3 * t + (k + 1) % 3]] = (uint32_t)t;
-        }
     for (size_t i = 0; i < dt->hull_count; i++) {
         uint32_t v = s->inv[dt->hull[i]];
         s->on_boundary[v] = 1;

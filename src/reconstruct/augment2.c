@@ -240,9 +240,10 @@ static int collect_graphs(const c2_state *s, csr *base, csr *dt)
             r = edges_add(&l, s->tri[3 * t + k], s->tri[3 * t + (k + 1) % 3]);
     if (!r) r = csr_build(base, s->n, l.e, l.count);
     l.count = 0;
+    const uint32_t *dtt = c2_dt_tri(s);
     for (size_t t = 0; t < s->dt_count && !r; t++)
         for (int k = 0; k < 3 && !r; k++)
-            r = edges_add(&l, s->dt_tri[3 * t + k], s->dt_tri[3 * t + (k + 1) % 3]);
+            r = edges_add(&l, dtt[3 * t + k], dtt[3 * t + (k + 1) % 3]);
     if (!r) r = csr_build(dt, s->n, l.e, l.count);
     free(l.e);
     return r;
@@ -280,6 +281,7 @@ fl_status c2_augment(c2_state *s, int levels, double *c0_used, fl_progress_fn pr
     scratch sc[2] = {{0}, {0}};
     fl_status st = FL_OK;
     *c0_used = NAN;
+    if (c2_keep_dt(s)) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for flips");
     for (int i = 0; i < 2; i++) {
         sc[i].stamp = fl_calloc_array(s->n, sizeof(uint32_t));
         sc[i].queue = fl_alloc_array(s->n + 2, sizeof(uint32_t));

@@ -40,9 +40,13 @@ int c2_delete_face(c2_state *s, uint32_t t, uint32_t a)
     s->boundary_count++;
     s->bnext[a] = c;
     s->bnext[c] = b;
-    s->btri[a] = s->vtri[a] = n1;
-    s->btri[c] = s->vtri[c] = n2;
-    s->vtri[b] = s->btri[b];
+    s->btri[a] = n1;
+    s->btri[c] = n2;
+    if (s->vtri) {
+        s->vtri[a] = n1;
+        s->vtri[c] = n2;
+        s->vtri[b] = s->btri[b];
+    }
     if (c2_push_candidates(s, a) || c2_push_candidates(s, c)) return -1;
     return 0;
 }

@@ -2,7 +2,8 @@
  * reconstruct2.c (the public entry), reconstruct2_io.c (writing results),
  * constrict2.c (Algorithm 5.1 on the Delaunay triangulation), criteria2.c (the keys),
  * heap2.c (the priority queue), flip2.c (walking and inserting segments by edge flips),
- * augment2.c (locked constriction, §5.4) and keep2.c (constrained constriction, §5.7).
+ * augment2.c (locked constriction, §5.4), keep2.c (constrained constriction, §5.7) and
+ * order2.c (listing the final boundary).
  * Not part of the public API. */
 #ifndef FL_CONSTRICT2_INTERNAL_H
 #define FL_CONSTRICT2_INTERNAL_H
@@ -20,10 +21,13 @@ typedef struct c2_entry {
     uint32_t a, b, c;
 } c2_entry;
 
-/* Binary min-heap ordered by key, ties by (a, b, c) so runs are deterministic. */
+/* 4-ary min-heap (heap2.c) ordered by key, ties by the input indices of (a, b, c) (orig[], or
+ * the indices themselves when orig is NULL), so runs are deterministic and do not depend on the
+ * internal numbering. */
 typedef struct c2_heap {
     c2_entry *items;
     size_t count, capacity;
+    const uint32_t *orig;
 } c2_heap;
 
 int c2_heap_push(c2_heap *h, c2_entry e); /* 0, or -1 when out of memory */
@@ -36,23 +40,36 @@ void c2_heap_free(c2_heap *h);
  * kept edges) rewrite two slots in place, so the living triangles always tile the region inside
  * the current boundary. */
 typedef struct c2_state {
-    const double *xy;
-    size_t n, unique_count;
+    const double *xy;      /* n points in the internal numbering (see below) */
+    size_t n, unique_count; /* internal vertices: n == unique_count */
+    size_t n_input;        /* input points, duplicates included */
+    /* Internal numbering: the distinct points renumbered in the order they first appear in the
+     * Delaunay triangles, so that vertices close in the plane are close in memory (the
+     * triangulation lists its triangles in a spatially coherent order). Constriction runs
+     * along a front, and with the input numbering (shuffled points: random) every vertex it
+     * touched was a cache miss in each per-vertex array. Results are mapped back on output;
+     * ties between keys are broken by input indices, so the result does not depend on it. */
+    uint32_t *orig;        /* n: internal -> input index (the first of its duplicates) */
+    uint32_t *inv;         /* n_input: input index -> internal index */
+    double *xy_store;      /* owned storage behind xy */
     size_t tcount;
     uint32_t *tri, *adj;
     uint8_t *alive;
-    uint32_t *vtri;        /* per vertex: a living triangle at it (C2_NONE for duplicates) */
+    uint32_t *vtri;        /* per vertex: a living triangle at it; only kept up to date once
+                              flips may happen (c2_keep_dt makes it), NULL before */
     uint8_t *on_boundary;  /* per vertex */
     uint32_t *bnext;       /* per boundary vertex: the next boundary vertex (counterclockwise) */
     uint32_t *btri;        /* per boundary vertex v: the living triangle with edge v->bnext[v] */
     size_t boundary_count; /* boundary vertices */
-    uint32_t *keep_nb;     /* 2 per vertex: partners along kept edges, C2_NONE when unused */
+    uint32_t *keep_nb;     /* 2 per vertex: partners along kept edges, C2_NONE when unused;
+                              NULL when no edge is kept (the common case skips every check) */
     fl_reconstruct2_criterion criterion;
     int augmented;   /* nonzero once edges of γ([-1,1],[c0,1]), c0 < 0, take part */
     size_t *g_start; /* augmented mode: the graph's neighbours of v are g_nb[g_start[v] ..
                         g_start[v+1]-1], sorted (Delaunay edges plus the extra edges) */
     uint32_t *g_nb;
-    const uint32_t *dt_tri; /* the Delaunay triangulation as built (dt_count triangles) */
+    uint32_t *dt_copy; /* the Delaunay triangulation as built (dt_count triangles), copied by
+                          c2_keep_dt before the first flip; NULL while tri is still that */
     size_t dt_count;
     c2_heap heap;
 } c2_state;
@@ -64,6 +81,7 @@ static inline const double *c2_pt(const c2_state *s, uint32_t v)
 
 static inline int c2_is_kept(const c2_state *s, uint32_t p, uint32_t q)
 {
+    if (!s->keep_nb) return 0;
     return s->keep_nb[2 * (size_t)p] == q || s->keep_nb[2 * (size_t)p + 1] == q;
 }
 
@@ -73,12 +91,25 @@ static inline int c2_is_kept(const c2_state *s, uint32_t p, uint32_t q)
  * later deletion can turn into a boundary edge without dropping the points beyond it. */
 static inline int c2_keep_allows(const c2_state *s, uint32_t a, uint32_t b, uint32_t c)
 {
+    if (!s->keep_nb) return 1;
     for (int j = 0; j < 2; j++) {
         uint32_t k = s->keep_nb[2 * (size_t)c + j];
         if (k != C2_NONE && k != a && k != b && s->on_boundary[k]) return 0;
     }
     return 1;
 }
+
+/* The Delaunay triangulation as built: tri itself until a flip changed it. */
+static inline const uint32_t *c2_dt_tri(const c2_state *s)
+{
+    return s->dt_copy ? s->dt_copy : s->tri;
+}
+
+/* reconstruct2.c: prepares for flips, once: keeps a copy of the Delaunay triangulation before
+ * tri is first flipped (the result returns it, augmentation reads it) and makes vtri, which
+ * only the flips' walks need (plain constriction never reads it). 0, or -1 when out of
+ * memory. */
+int c2_keep_dt(c2_state *s);
 
 /* Corner of triangle t holding vertex v, or -1. */
 static inline int c2_corner(const c2_state *s, uint32_t t, uint32_t v)
@@ -122,6 +153,10 @@ fl_status c2_constrict(c2_state *s, fl_progress_fn progress, void *progress_user
 /* augment2.c: pushes every triangle a b c of the augmented graph with c inside (a->b being
  * the boundary edge a->bnext[a]). 0, or -1 when out of memory. */
 int c2_push_graph_candidates(c2_state *s, uint32_t a);
+
+/* order2.c: fills out[0..boundary_count-1] with the boundary cycle from boundary vertex
+ * `start`. 0, or -1 when out of memory. */
+int c2_boundary_order(const c2_state *s, uint32_t start, uint32_t *out);
 
 /* keep2.c: validates the kept edges (mapped to distinct points through rep[]) and inserts them
  * into the full triangulation; fills keep_nb. */

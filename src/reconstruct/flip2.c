@@ -203,6 +203,7 @@ static int flip_until_inserted(c2_state *s, uint32_t a, uint32_t b, walk *w)
 
 int c2_insert_segment(c2_state *s, uint32_t a, uint32_t b)
 {
+    if (c2_keep_dt(s)) return -1;
     walk w = {0};
     int r = walk_segment(s, a, b, &w);
     if (r == 1)
@@ -221,6 +222,7 @@ int c2_insert_segment(c2_state *s, uint32_t a, uint32_t b)
  * edges of F put in, as close to Delaunay as F allows. 0, or -1 when out of memory. */
 int c2_restore_delaunay(c2_state *s)
 {
+    if (c2_keep_dt(s)) return -1;
     size_t count = 3 * s->tcount, cap = count + 64;
     uint32_t *stack = fl_alloc_array(cap, sizeof *stack);
     if (!stack) return -1;

@@ -21,18 +21,23 @@ static fl_status add_partner(c2_state *s, uint32_t p, uint32_t q, size_t i, fl_e
         return fl_fail(err, FL_ERR_INPUT, NULL, -1,
                        "kept edge %zu: point %u would have three kept edges, but a simple "
                        "polygon passes each point once (two edges)",
-                       i, p);
+                       i, s->orig[p]);
     return FL_OK;
 }
 
 fl_status c2_keep_edges(c2_state *s, const uint32_t *rep, const uint32_t *keep, size_t count,
                         fl_error *err)
 {
+    s->keep_nb = fl_alloc_array(2 * s->n, sizeof *s->keep_nb);
+    if (!s->keep_nb) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for kept edges");
+    for (size_t i = 0; i < 2 * s->n; i++)
+        s->keep_nb[i] = C2_NONE;
     for (size_t i = 0; i < count; i++) {
         uint32_t p = keep[2 * i], q = keep[2 * i + 1];
-        if (p >= s->n || q >= s->n)
+        if (p >= s->n_input || q >= s->n_input)
             return fl_fail(err, FL_ERR_INPUT, NULL, -1,
-                           "kept edge %zu (%u-%u): index out of range (%zu points)", i, p, q, s->n);
+                           "kept edge %zu (%u-%u): index out of range (%zu points)", i, p, q,
+                           s->n_input);
         p = rep[p], q = rep[q];
         if (p == q)
             return fl_fail(err, FL_ERR_INPUT, NULL, -1,

@@ -12,58 +12,115 @@ static void state_free(c2_state *s)
 {
     free(s->tri);
     free(s->adj);
+    free(s->dt_copy);
     free(s->alive);
     free(s->vtri);
     free(s->on_boundary);
     free(s->bnext);
     free(s->btri);
     free(s->keep_nb);
+    free(s->orig);
+    free(s->inv);
+    free(s->xy_store);
     free(s->g_start);
     free(s->g_nb);
     c2_heap_free(&s->heap);
     memset(s, 0, sizeof *s);
 }
 
-/* Line 2 of Algorithm 5.1: the boundary of γ([-1,1],[0,1]) is the convex hull. */
-static fl_status state_init(c2_state *s, const double *xy, const fl_dt2 *dt,
+int c2_keep_dt(c2_state *s)
+{
+    if (s->dt_copy) return 0;
+    if (!s->vtri) s->vtri = fl_alloc_array(s->n, sizeof *s->vtri);
+    if (!s->vtri) return -1;
+    s->dt_copy = fl_alloc_array(3 * s->dt_count, sizeof *s->dt_copy);
+    if (!s->dt_copy) return -1;
+    memcpy(s->dt_copy, s->tri, 3 * s->dt_count * sizeof *s->tri);
+    for (size_t v = 0; v < s->n; v++)
+        s->vtri[v] = C2_NONE;
+    for (size_t t = 0; t < s->tcount; t++)
+        for (int k = 0; k < 3 && s->alive[t]; k++)
+            s->vtri[s->tri[3 * t + k]] = (uint32_t)t;
+    return 0;
+}
+
+enum { PREFETCH = 16 }; /* entries ahead in the renumbering's random-access loops */
+
+static fl_status renumber(c2_state *s, const double *xy, const fl_dt2 *dt, fl_error *err)
+{
+    size_t n = dt->point_count, u = dt->unique_count, k = 0;
+    s->orig = fl_alloc_array(u, sizeof *s->orig);
+    s->inv = fl_alloc_array(n, sizeof *s->inv);
+    s->xy_store = fl_alloc_array(u, 2 * sizeof *s->xy_store);
+    if (!s->orig || !s->inv || !s->xy_store)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
+    memset(s->inv, 0xff, n * sizeof *s->inv);
+    int broken = 0; /* more vertices than distinct points */
+    size_t m = 3 * s->tcount;
+    for (size_t i = 0; i < m && !broken; i++) {
+        /* inv[] is indexed by input index (random in memory for shuffled input): ask for the
+         * lines a few entries ahead. */
+        if (i + PREFETCH < m) __builtin_prefetch(&s->inv[s->tri[i + PREFETCH]]);
+        uint32_t v = s->tri[i];
+        if (s->inv[v] == C2_NONE) {
+            if ((broken = k == u)) break;
+            s->inv[v] = (uint32_t)k;
+            s->orig[k++] = v;
+        }
+        s->tri[i] = s->inv[v];
+    }
+    /* Gathered in a loop of its own: independent loads the processor can overlap. */
+    for (size_t j = 0; j < k; j++) {
+        if (j + PREFETCH < k) __builtin_prefetch(&xy[2 * (size_t)s->orig[j + PREFETCH]]);
+        s->xy_store[2 * j] = xy[2 * (size_t)s->orig[j]];
+        s->xy_store[2 * j + 1] = xy[2 * (size_t)s->orig[j] + 1];
+    }
+    if (k != u || broken)
+        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
+                       "the Delaunay triangles do not use the %zu distinct points once each", u);
+    for (size_t v = 0; v < n; v++)
+        if (s->inv[v] == C2_NONE) s->inv[v] = s->inv[dt->duplicate_of[v]];
+    s->xy = s->xy_store;
+    s->heap.orig = s->orig;
+    return FL_OK;
+}
+
+/* Line 2 of Algorithm 5.1: the boundary of γ([-1,1],[0,1]) is the convex hull. The state takes
+ * over the triangulation's triangles and neighbours instead of copying them (the 1e6-point
+ * curve spent a tenth of its constriction time in that copy and its page faults); a copy of
+ * the triangles is made only if flips are going to change them (c2_keep_dt). */
+static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
                             fl_reconstruct2_criterion criterion, fl_error *err)
 {
-    size_t n = dt->point_count, tc = dt->triangle_count;
+    size_t n = dt->unique_count, tc = dt->triangle_count;
     memset(s, 0, sizeof *s);
-    s->xy = xy;
     s->n = n;
-    s->unique_count = dt->unique_count;
+    s->n_input = dt->point_count;
+    s->unique_count = n;
     s->tcount = tc;
     s->criterion = criterion;
-    s->dt_tri = dt->tri;
     s->dt_count = tc;
-    s->tri = fl_alloc_array(3 * tc, sizeof *s->tri);
-    s->adj = fl_alloc_array(3 * tc, sizeof *s->adj);
+    s->tri = dt->tri;
+    s->adj = dt->adj;
+    dt->tri = dt->adj = NULL;
+    fl_status st = renumber(s, xy, dt, err);
+    if (st != FL_OK) return st;
     s->alive = fl_alloc_array(tc, 1);
-    s->vtri = fl_alloc_array(n, sizeof *s->vtri);
     s->on_boundary = fl_calloc_array(n, 1);
     s->bnext = fl_alloc_array(n, sizeof *s->bnext);
     s->btri = fl_alloc_array(n, sizeof *s->btri);
-    s->keep_nb = fl_alloc_array(2 * n, sizeof *s->keep_nb);
-    if (!s->tri || !s->adj || !s->alive || !s->vtri || !s->on_boundary || !s->bnext || !s->btri ||
-        !s->keep_nb)
+    if (!s->alive || !s->on_boundary || !s->bnext || !s->btri)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
-    memcpy(s->tri, dt->tri, 3 * tc * sizeof *s->tri);
-    memcpy(s->adj, dt->adj, 3 * tc * sizeof *s->adj);
     memset(s->alive, 1, tc);
     for (size_t i = 0; i < n; i++)
-        s->vtri[i] = s->bnext[i] = s->btri[i] = C2_NONE;
-    for (size_t i = 0; i < 2 * n; i++)
-        s->keep_nb[i] = C2_NONE;
+        s->bnext[i] = s->btri[i] = C2_NONE;
     for (size_t t = 0; t < tc; t++)
-        for (int k = 0; k < 3; k++) {
-            s->vtri[s->tri[3 * t + k]] = (uint32_t)t;
+        for (int k = 0; k < 3; k++)
             if (s->adj[3 * t + k] == C2_NONE) s->btri[s->tri[3 * t + (k + 1) % 3]] = (uint32_t)t;
-        }
     for (size_t i = 0; i < dt->hull_count; i++) {
-        uint32_t v = dt->hull[i];
+        uint32_t v = s->inv[dt->hull[i]];
         s->on_boundary[v] = 1;
-        s->bnext[v] = dt->hull[(i + 1) % dt->hull_count];
+        s->bnext[v] = s->inv[dt->hull[(i + 1) % dt->hull_count]];
     }
     s->boundary_count = dt->hull_count;
     return FL_OK;
@@ -72,7 +129,7 @@ static fl_status state_init(c2_state *s, const double *xy, const fl_dt2 *dt,
 static fl_status push_hull(c2_state *s, const fl_dt2 *dt, fl_error *err)
 {
     for (size_t i = 0; i < dt->hull_count; i++)
-        if (c2_push_candidates(s, dt->hull[i]))
+        if (c2_push_candidates(s, s->inv[dt->hull[i]]))
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the heap");
     return FL_OK;
 }
@@ -96,16 +153,19 @@ static void explain(const c2_state *s, const fl_reconstruct2_options *o, double 
                      inside, c0_tried, o->keep_count ? "; the kept edges may block it" : "");
         return;
     }
-    for (size_t v = 0; v < s->n; v++)
+    for (size_t i = 0; i < s->n_input && s->keep_nb; i++) {
+        uint32_t v = s->inv[i];
+        if (s->orig[v] != i) continue; /* a duplicate */
         for (int j = 0; j < 2; j++) {
-            uint32_t w = s->keep_nb[2 * v + j];
+            uint32_t w = s->keep_nb[2 * (size_t)v + j];
             if (w == C2_NONE || s->bnext[v] == w || s->bnext[w] == v) continue;
             snprintf(out->reason, sizeof out->reason,
                      "kept edge %zu-%u ends up inside the polygon, not on its boundary: no "
                      "constriction keeps it",
-                     v, w);
+                     i, s->orig[w]);
             return;
         }
+    }
     out->all_on_boundary = 1;
 }
 
@@ -119,19 +179,25 @@ static fl_status extract(const c2_state *s, const fl_dt2 *dt, fl_reconstruction2
     out->tri = fl_alloc_array(3 * live, sizeof *out->tri);
     if (!out->boundary || !out->tri)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
-    uint32_t v = dt->hull[0]; /* hull vertices never leave the boundary */
+    /* hull vertices never leave the boundary */
+    if (c2_boundary_order(s, s->inv[dt->hull[0]], out->boundary))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
     double area2 = 0;
-    for (size_t i = 0; i < s->boundary_count; i++) {
-        out->boundary[i] = v;
-        uint32_t w = s->bnext[v];
-        const double *p = c2_pt(s, v), *q = c2_pt(s, w);
+    for (size_t i = 0, m = s->boundary_count; i < m; i++) {
+        const double *p = c2_pt(s, out->boundary[i]);
+        const double *q = c2_pt(s, out->boundary[i + 1 < m ? i + 1 : 0]);
         area2 += p[0] * q[1] - p[1] * q[0];
-        v = w;
     }
+    for (size_t i = 0; i < s->boundary_count; i++)
+        out->boundary[i] = s->orig[out->boundary[i]];
     out->boundary_count = s->boundary_count;
     size_t j = 0;
     for (size_t t = 0; t < s->tcount; t++)
-        if (s->alive[t]) memcpy(out->tri + 3 * j++, s->tri + 3 * t, 3 * sizeof *out->tri);
+        if (s->alive[t]) {
+            for (int k = 0; k < 3; k++)
+                out->tri[3 * j + k] = s->orig[s->tri[3 * t + k]];
+            j++;
+        }
     out->triangle_count = live;
     out->area = area2 / 2;
     return FL_OK;
@@ -145,7 +211,7 @@ static fl_status run(const double *xy, size_t n, const fl_reconstruct2_options *
     if (st != FL_OK) return st;
     if ((st = state_init(s, xy, dt, o->criterion, err)) != FL_OK) return st;
     if (o->keep_count &&
-        (st = c2_keep_edges(s, dt->duplicate_of, o->keep, o->keep_count, err)) != FL_OK)
+        (st = c2_keep_edges(s, s->inv, o->keep, o->keep_count, err)) != FL_OK)
         return st;
     if ((st = push_hull(s, dt, err)) != FL_OK) return st;
     if ((st = c2_constrict(s, o->progress, o->progress_user, err)) != FL_OK) return st;
@@ -161,9 +227,12 @@ static fl_status run(const double *xy, size_t n, const fl_reconstruct2_options *
     out->augmented_c0 = c0;
     explain(s, o, tried, out);
     if ((st = extract(s, dt, out, err)) != FL_OK) return st;
-    out->delaunay_count = dt->triangle_count;
-    out->delaunay_tri = dt->tri;
-    dt->tri = NULL;
+    out->delaunay_count = s->dt_count;
+    uint32_t **dtt = s->dt_copy ? &s->dt_copy : &s->tri;
+    for (size_t i = 0; i < 3 * s->dt_count; i++)
+        (*dtt)[i] = s->orig[(*dtt)[i]];
+    out->delaunay_tri = *dtt;
+    *dtt = NULL;
     return FL_OK;
 }
 

@@ -32,6 +32,45 @@ static void test_gamma_indicator_matches_the_circumradius_definition(void)
     CHECK_NEAR(c2_gamma_indicator(a, b, obt), sqrt(3) / 2 - 1, 1e-15);
 }
 
+/* The γ-indicator as first written (every rescaling through ldexp): the fast path, which
+ * multiplies by 2^-e instead, must give the same double bit for bit, or constriction's order
+ * (and result) could change. Triangles at magnitudes from 1e-300 to 1e300, where the rescaled
+ * components may be subnormal and the scale itself leaves the fast path. */
+static double gamma_by_ldexp(const double *a, const double *b, const double *c)
+{
+    double ux = a[0] - c[0], uy = a[1] - c[1], vx = b[0] - c[0], vy = b[1] - c[1];
+    int e;
+    frexp(fmax(fmax(fabs(ux), fabs(uy)), fmax(fabs(vx), fabs(vy))), &e);
+    ux = ldexp(ux, -e), uy = ldexp(uy, -e), vx = ldexp(vx, -e), vy = ldexp(vy, -e);
+    double lu = hypot(ux, uy), lv = hypot(vx, vy);
+    if (!(lu > 0 && lv > 0)) return 1;
+    double sin_t = fabs(ux * vy - uy * vx) / lu / lv;
+    double cos_t = (ux * vx + uy * vy) / lu / lv;
+    if (sin_t > 1) sin_t = 1;
+    return cos_t >= 0 ? 1 - sin_t : sin_t - 1;
+}
+
+static void test_gamma_indicator_fast_scaling_is_bit_identical(void)
+{
+    uint64_t x = 0x9e3779b97f4a7c15ull;
+    size_t differ = 0, subnormal = 0;
+    for (int i = 0; i < 200000; i++) {
+        double p[6];
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        double mag = pow(10, (double)(x % 601) - 300); /* 1e-300 .. 1e300 */
+        double thin = (x >> 20) % 4 == 0 ? 1e-310 : 1; /* rescaled y: subnormal */
+        for (int k = 0; k < 6; k++) {
+            x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+            p[k] = mag * ((double)(x >> 11) / 9007199254740992.0 - 0.5) * (k % 2 ? thin : 1);
+        }
+        double fast = c2_gamma_indicator(p, p + 2, p + 4), ref = gamma_by_ldexp(p, p + 2, p + 4);
+        differ += memcmp(&fast, &ref, sizeof fast) != 0;
+        subnormal += thin < 1 && mag >= 1e-10 && p[1] != p[5];
+    }
+    CHECK_EQ_INT(differ, 0);
+    CHECK(subnormal > 0); /* the subnormal rescaling was exercised */
+}
+
 static void test_every_criterion_reconstructs_a_dense_star_in_order(void)
 {
     const char *names[] = {"gamma", "area-change", "voronoi-skeleton"};
@@ -130,6 +169,7 @@ static void test_written_polygon_and_mesh_read_back(void)
 }
 
 FL_TEST_MAIN(FL_TEST_CASE(test_gamma_indicator_matches_the_circumradius_definition),
+             FL_TEST_CASE(test_gamma_indicator_fast_scaling_is_bit_identical),
              FL_TEST_CASE(test_every_criterion_reconstructs_a_dense_star_in_order),
              FL_TEST_CASE(test_result_is_independent_of_scale_and_quarter_turns),
              FL_TEST_CASE(test_written_polygon_and_mesh_read_back))

@@ -155,6 +155,53 @@ static void test_grid_points_give_a_simple_polygon_through_all(void)
     }
 }
 
+/* A long boundary (20000 shuffled samples of a five-lobed star: the polygon is listed by the
+ * segmented walk, order2.c, and constriction runs on the internal numbering): the polygon must
+ * be the sampling order, starting at a hull vertex, its area the shoelace sum of the input
+ * coordinates in that order, and the Delaunay triangles handed back exactly those fl_dt2_build
+ * gives for the same input (the internal numbering is mapped back). */
+static void test_long_shuffled_curve_comes_back_in_order_with_its_delaunay(void)
+{
+    size_t n = 20000;
+    double *star = rt_star(n, 5, 0.3), *xy = malloc(2 * n * sizeof *xy);
+    uint32_t *pos = malloc(n * sizeof *pos); /* pos[i]: place on the curve of input point i */
+    for (size_t i = 0; i < n; i++)
+        pos[i] = (uint32_t)i;
+    uint64_t x = 0x853c49e6748fea9bull;
+    for (size_t i = n - 1; i > 0; i--) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        size_t j = (size_t)(x % (i + 1));
+        uint32_t t = pos[i];
+        pos[i] = pos[j], pos[j] = t;
+    }
+    for (size_t i = 0; i < n; i++)
+        xy[2 * i] = star[2 * pos[i]], xy[2 * i + 1] = star[2 * pos[i] + 1];
+    fl_reconstruction2 rec;
+    reconstruct_ok(xy, n, NULL, &rec);
+    CHECK_EQ_INT(rec.boundary_count, n);
+    size_t out_of_order = 0;
+    double area2 = 0;
+    for (size_t i = 0; i < rec.boundary_count; i++) {
+        uint32_t v = rec.boundary[i], w = rec.boundary[(i + 1) % rec.boundary_count];
+        out_of_order += pos[w] != (pos[v] + 1) % n;
+        area2 += xy[2 * v] * xy[2 * w + 1] - xy[2 * v + 1] * xy[2 * w];
+    }
+    CHECK_EQ_INT(out_of_order, 0);
+    CHECK(rec.area == area2 / 2);
+    fl_dt2 dt;
+    fl_error err;
+    CHECK_STATUS(fl_dt2_build(xy, n, NULL, &dt, &err), FL_OK, &err);
+    CHECK_EQ_INT(rec.delaunay_count, dt.triangle_count);
+    CHECK(rec.delaunay_tri &&
+          memcmp(rec.delaunay_tri, dt.tri, 3 * dt.triangle_count * sizeof *dt.tri) == 0);
+    CHECK_EQ_INT(rec.boundary[0], dt.hull[0]);
+    fl_dt2_free(&dt);
+    fl_reconstruction2_free(&rec);
+    free(pos);
+    free(xy);
+    free(star);
+}
+
 static void test_three_points_give_their_triangle(void)
 {
     const double xy[] = {0, 0, 0, 1, 1, 0}; /* clockwise as given */
@@ -192,5 +239,6 @@ FL_TEST_MAIN(FL_TEST_CASE(test_points_on_a_circle_give_the_hull_in_order),
              FL_TEST_CASE(test_collinear_sides_of_an_l_shape_are_kept_in_order),
              FL_TEST_CASE(test_duplicates_share_the_place_of_their_first_copy),
              FL_TEST_CASE(test_grid_points_give_a_simple_polygon_through_all),
+             FL_TEST_CASE(test_long_shuffled_curve_comes_back_in_order_with_its_delaunay),
              FL_TEST_CASE(test_three_points_give_their_triangle),
              FL_TEST_CASE(test_bad_input_is_rejected_with_the_right_status))

@@ -1,0 +1,130 @@
+/* The priority queue of constriction (src/reconstruct/heap2.c, a 4-ary heap) against a sorted
+ * array: whatever the interleaving of pushes and pops, every pop must return the least entry
+ * still queued in the order the thesis' Algorithm 5.1 relies on (key, then the input indices of
+ * a, b, c), so that runs are deterministic and independent of the queue's implementation. */
+#include "fl_test.h"
+#include "reconstruct/constrict2_internal.h"
+
+static uint64_t rng = 0x243f6a8885a308d3ull;
+
+static uint32_t next_u32(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (uint32_t)(rng >> 32);
+}
+
+/* The oracle's order, written independently of heap2.c: NaN keys after all numbers. */
+static const uint32_t *oracle_orig;
+
+static int oracle_cmp(const void *px, const void *py)
+{
+    const c2_entry *x = px, *y = py;
+    int xn = isnan(x->key), yn = isnan(y->key);
+    if (xn != yn) return xn ? 1 : -1;
+    if (!xn && x->key != y->key) return x->key < y->key ? -1 : 1;
+    uint32_t kx[3] = {x->a, x->b, x->c}, ky[3] = {y->a, y->b, y->c};
+    for (int i = 0; i < 3; i++) {
+        uint32_t u = oracle_orig ? oracle_orig[kx[i]] : kx[i];
+        uint32_t v = oracle_orig ? oracle_orig[ky[i]] : ky[i];
+        if (u != v) return u < v ? -1 : 1;
+    }
+    return 0;
+}
+
+static int same_entry(c2_entry x, c2_entry y)
+{
+    return oracle_cmp(&x, &y) == 0;
+}
+
+/* Keys from a small set (many ties, a few NaN), indices from a small range (ties on a and b). */
+static c2_entry random_entry(void)
+{
+    static const double keys[] = {-1, -0.25, 0, 0.125, 0.5, 1};
+    c2_entry e;
+    uint32_t r = next_u32() % 64;
+    e.key = r == 0 ? NAN : r < 32 ? keys[r % 6] : (double)(next_u32() % 1000) / 999.0 - 0.5;
+    e.a = next_u32() % 8;
+    e.b = next_u32() % 8;
+    e.c = next_u32() % 8;
+    return e;
+}
+
+/* Pushes and pops at random (more pushes early, more pops late), checking each pop against the
+ * minimum of the oracle's multiset. */
+static void run_against_oracle(const uint32_t *orig, size_t ops)
+{
+    c2_heap h = {0};
+    h.orig = orig;
+    oracle_orig = orig;
+    c2_entry *all = malloc(ops * sizeof *all);
+    size_t count = 0, mismatches = 0, pops = 0;
+    for (size_t i = 0; i < ops; i++) {
+        int push = count == 0 || next_u32() % 100 < (i < ops / 2 ? 70u : 30u);
+        if (push) {
+            c2_entry e = random_entry();
+            CHECK(c2_heap_push(&h, e) == 0);
+            all[count++] = e;
+            continue;
+        }
+        qsort(all, count, sizeof *all, oracle_cmp);
+        c2_entry got = c2_heap_pop(&h);
+        mismatches += !same_entry(got, all[0]);
+        memmove(all, all + 1, (count - 1) * sizeof *all);
+        count--;
+        pops++;
+        CHECK_EQ_INT(h.count, count);
+    }
+    CHECK(pops > ops / 4);
+    CHECK_EQ_INT(mismatches, 0);
+    free(all);
+    c2_heap_free(&h);
+}
+
+static void test_heap_pops_the_least_entry_with_ties_on_indices(void)
+{
+    run_against_oracle(NULL, 4000);
+}
+
+static void test_heap_breaks_ties_by_input_indices_through_orig(void)
+{
+    /* orig reverses the internal numbering: ties must follow orig, not the raw indices. */
+    static const uint32_t orig[8] = {7, 6, 5, 4, 3, 2, 1, 0};
+    run_against_oracle(orig, 4000);
+    c2_heap h = {0};
+    h.orig = orig;
+    c2_entry lo = {0.5, 1, 2, 3}, hi = {0.5, 0, 2, 3}; /* orig[1] = 6 < orig[0] = 7 */
+    CHECK(c2_heap_push(&h, hi) == 0);
+    CHECK(c2_heap_push(&h, lo) == 0);
+    CHECK_EQ_INT(c2_heap_pop(&h).a, 1);
+    CHECK_EQ_INT(c2_heap_pop(&h).a, 0);
+    c2_heap_free(&h);
+}
+
+static void test_heap_survives_growth_past_many_levels(void)
+{
+    /* 20000 distinct keys pushed in decreasing order (every push sifts to the root), popped in
+     * increasing order. */
+    c2_heap h = {0};
+    size_t n = 20000, wrong = 0;
+    for (size_t i = 0; i < n; i++) {
+        c2_entry e = {(double)(n - i), (uint32_t)i, 0, 0};
+        CHECK(c2_heap_push(&h, e) == 0);
+    }
+    for (size_t i = 0; i < n; i++)
+        wrong += c2_heap_pop(&h).key != (double)(i + 1);
+    CHECK_EQ_INT(wrong, 0);
+    CHECK_EQ_INT(h.count, 0);
+    c2_heap_free(&h);
+}
+
+int main(void)
+{
+    static const fl_test_case cases[] = {
+        FL_TEST_CASE(test_heap_pops_the_least_entry_with_ties_on_indices),
+        FL_TEST_CASE(test_heap_breaks_ties_by_input_indices_through_orig),
+        FL_TEST_CASE(test_heap_survives_growth_past_many_levels),
+    };
+    return fl_test_run(cases, sizeof cases / sizeof *cases);
+}

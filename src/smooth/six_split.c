@@ -373,6 +373,7 @@ static double spoke_ratio(double x0[6][3], double x[6][3])
             a += s1 * s1;
             b += s0 * s0;
         }
+        if (!(b > 0)) return INFINITY; /* no spoke to keep (or NaN input): nothing to search */
         worst = fmin(worst, sqrt(a / b));
     }
     return worst;

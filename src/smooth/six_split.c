@@ -306,6 +306,9 @@ static int edge_solve(const edge_setup *q, double shift, double tol, double x0[6
     return rank;
 }
 
+static double displacement(double x0[6][3], double x[6][3]);
+static double spoke_ratio(double x0[6][3], double x[6][3]);
+
 /* A rank-deficient edge (a mirror plane through the edge makes f = g on both halves, so the
  * equations see the two micro centres beside each half only through their sum: 4 unknown
  * points for 5 equations) is in general inconsistent with the multipliers taken from the
@@ -319,35 +322,43 @@ static void midpoint_multiplier_search(const edge_setup *q, double x0[6][3], dou
                                        double res0)
 {
     enum { GRID = 40 };
-    const double lo = -0.5, hi = 0.5, g = 0.6180339887498949;
-    double best = res0, bt = 0, y[6][3], r;
+    const double lo = -0.5, hi = 0.5, step = (hi - lo) / GRID, g = 0.6180339887498949;
+    double grid[GRID + 1], y[6][3], r, ab[3], best = res0, pick[6][3];
+    int found = 0;
+    g1_sub(q->B, q->A, ab);
+    for (int i = 0; i <= GRID; i++)
+        if (edge_solve(q, lo + step * i, RANK_TOL, x0, y, &grid[i]) < 0) grid[i] = INFINITY;
+    /* The residual can have several roots; refine around every grid minimum and keep the most
+     * accurate solution that stays near the subdivision values (sphere.off and elephant.off
+     * have far roots whose solutions stretch the midpoint spokes 14-20000 times). */
     for (int i = 0; i <= GRID; i++) {
-        double t = lo + (hi - lo) * i / GRID;
-        if (edge_solve(q, t, RANK_TOL, x0, y, &r) >= 0 && r < best) best = r, bt = t;
+        if (!(grid[i] < res0) || (i > 0 && grid[i - 1] < grid[i]) ||
+            (i < GRID && grid[i + 1] < grid[i]))
+            continue;
+        double a = lo + step * (i - 1), b = lo + step * (i + 1), bt = lo + step * i,
+               bv = grid[i], rc, rd;
+        for (int it = 0; it < 80 && bv > 1e-16; it++) {
+            double c = b - g * (b - a), d = a + g * (b - a);
+            if (edge_solve(q, c, RANK_TOL, x0, y, &rc) < 0) rc = INFINITY;
+            if (edge_solve(q, d, RANK_TOL, x0, y, &rd) < 0) rd = INFINITY;
+            if (rc < rd) b = d; else a = c;
+            if (fmin(rc, rd) < bv) bv = fmin(rc, rd), bt = rc < rd ? c : d;
+        }
+        double z[6][3];
+        edge_solve(q, bt, RANK_TOL, x0, z, &r);
+        /* On a nearly (not exactly) symmetric edge the rank-4 solve leaves the small equation
+         * it dropped unsatisfied (residual ~1e-12 on elephant.off); with the multiplier found
+         * the full system is nearly consistent, so its full-rank solution stays close: take it
+         * when it is more accurate and moves the points at most twice as far. */
+        double rz = r;
+        if (edge_solve(q, bt, 1e-24, x0, y, &r) == 5 && r < rz &&
+            displacement(x0, y) <= 4 * displacement(x0, z))
+            memcpy(z, y, sizeof y), rz = r;
+        double sr = spoke_ratio(x0, z);
+        if (rz < best && sr >= 0.25 && sr <= 4 && sqrt(displacement(x0, z)) <= 0.5 * g1_length(ab))
+            memcpy(pick, z, sizeof z), best = rz, found = 1;
     }
-    double a = bt - (hi - lo) / GRID, b = bt + (hi - lo) / GRID;
-    for (int it = 0; it < 80 && best > 1e-15; it++) {
-        double c = b - g * (b - a), d = a + g * (b - a), rc, rd;
-        if (edge_solve(q, c, RANK_TOL, x0, y, &rc) < 0) rc = INFINITY;
-        if (edge_solve(q, d, RANK_TOL, x0, y, &rd) < 0) rd = INFINITY;
-        if (rc < rd) b = d; else a = c;
-        if (fmin(rc, rd) < best) best = fmin(rc, rd), bt = rc < rd ? c : d;
-    }
-    if (!(best < res0)) return;
-    edge_solve(q, bt, RANK_TOL, x0, x, &r);
-    /* On a nearly (not exactly) symmetric edge the rank-4 solve leaves the small equation it
-     * dropped unsatisfied (residual ~1e-12 on elephant.off); with the multiplier found, the
-     * full system is nearly consistent, so its full-rank solution stays close: take it when it
-     * is more accurate and moves the points at most twice as far. */
-    double dx = 0, dy = 0;
-    if (edge_solve(q, bt, 1e-24, x0, y, &r) == 5 && r < best) {
-        for (int c = 0; c < 6; c++)
-            for (int d = 0; d < 3; d++) {
-                dx = fmax(dx, fabs(x[c][d] - x0[c][d]));
-                dy = fmax(dy, fabs(y[c][d] - x0[c][d]));
-            }
-        if (dy <= 2 * dx) memcpy(x, y, sizeof y);
-    }
+    if (found) memcpy(x, pick, sizeof pick);
 }
 
 /* Squared displacement of x from x0 (the thesis's objective, §9.8 step 5, in squares). */

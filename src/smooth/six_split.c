@@ -22,7 +22,10 @@
  * get linear multipliers (eq. 9.3 on each half, the end at V fixed by the vertex tangent plane,
  * the end at m by the tangent plane there) and the free points around m -- m itself, Y_A, and
  * the four centres P next to the edge -- move as little as possible from their subdivision
- * values under the five independent vector equations. */
+ * values under the five independent vector equations. The coefficient of Y - m in the triple
+ * at m is free; where its subdivision value leaves the system inconsistent (a mirror plane
+ * through the edge) or collapses the midpoint spokes onto m (a mirror plane across it), it is
+ * searched per edge (midpoint_multiplier_search, midpoint_spoke_search; docs/smooth.md). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -22,7 +22,10 @@
  * get linear multipliers (eq. 9.3 on each half, the end at V fixed by the vertex tangent plane,
  * the end at m by the tangent plane there) and the free points around m -- m itself, Y_A, and
  * the four centres P next to the edge -- move as little as possible from their subdivision
- * values under the five independent vector equations. */
+ * values under the five independent vector equations. The coefficient of Y - m in the triple
+ * at m is free; where its subdivision value leaves the system inconsistent (a mirror plane
+ * through the edge) or collapses the midpoint spokes onto m (a mirror plane across it), it is
+ * searched per edge (midpoint_multiplier_search, midpoint_spoke_search; docs/smooth.md). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -178,7 +181,7 @@ static int solve_gram(double g[5][5], double r[5][3], double tol, double z[5][3]
 
 /* Least displacement x = x_old + A^T (A A^T)^-1 (b - A x_old), coordinate by coordinate (the
  * equations have scalar coefficients). Returns the rank of A (5 when independent). */
-static int min_displacement(double a[5][6], double b[5][3], double x[6][3])
+static int min_displacement(double a[5][6], double b[5][3], double x[6][3], double tol)
 {
     double g[5][5], r[5][3], z[5][3], scale = 0;
     for (int i = 0; i < 5; i++) {
@@ -194,7 +197,7 @@ static int min_displacement(double a[5][6], double b[5][3], double x[6][3])
                 r[i][d] -= a[i][c] * x[c][d];
         }
     }
-    int rank = solve_gram(g, r, 1e-12 * scale, z);
+    int rank = solve_gram(g, r, tol * scale, z);
     for (int c = 0; c < 6; c++)
         for (int d = 0; d < 3; d++)
             for (int i = 0; i < 5; i++)
@@ -212,16 +215,18 @@ static void project(const double *p, const double *o, const double *n, double *o
 }
 
 /* The end triple at m in the frame of M3 (as surface.c's solve_edge does for eq. 9.3d),
- * turned into eq. 9.3d's (e1, f1, g1) and scaled so (f1, g1) is closest to (f0, g0). */
+ * turned into eq. 9.3d's (e1, f1, g1) and scaled so (f1, g1) is closest to (f0, g0). The
+ * M3-frame coefficient of Y - m is e3 + shift: shift is the one free multiplier at m that
+ * solve_edge searches on rank-deficient edges (docs/smooth.md, "the midpoint multiplier"). */
 static int end_at_midpoint(const double *m, const double *y, const double *nl, const double *nr,
-                           const double *n, const double *c0, double *c1)
+                           const double *n, const double *c0, double shift, double *c1)
 {
     double back[3], l3[3], r3[3], e3;
     g1_sub(y, m, back);
     g1_sub(nl, m, l3);
     g1_sub(nr, m, r3);
     if (!g1_edge_coefficients(back, l3, r3, n, &e3, &c1[1], &c1[2])) return 0;
-    c1[0] = -(e3 + c1[1] + c1[2]);
+    c1[0] = -(e3 + shift + c1[1] + c1[2]);
     double rho = (c0[1] * c1[1] + c0[2] * c1[2]) / (c1[1] * c1[1] + c1[2] * c1[2]);
     if (rho > 0 && isfinite(rho))
         for (int k = 0; k < 3; k++)
@@ -245,6 +250,190 @@ static void k_point(const fl_mesh *m, const six_tri *T, size_t t, int at, int fw
         e = T->net[at == 0 ? ix(2, 0) : at == 1 ? ix(1, 2) : ix(0, 1)];
     for (int d = 0; d < 3; d++)
         out[d] = (v[d] + e[d]) / 2;
+}
+
+/* What solve_edge knows about one macro edge before step 5: the end triples at the vertices
+ * (ca, cb), the configuration at m from which the triples at m are taken, the known points. */
+/* Gram pivots below RANK_TOL times the largest diagonal count as zero (a dependent edge). */
+#define RANK_TOL 1e-12
+
+typedef struct edge_setup {
+    double m[3], y0[3], yb0[3], ylp[3], yrp[3], nm[3], ca[3], cb[3];
+    const double *A, *B, *ka, *kb, *tn[2], *un[2];
+} edge_setup;
+
+/* The five vector equations of step 5 (eq. 9.3 on both half-edges, C3 at m once) with the
+ * midpoint multiplier shifted by `shift`, solved for the least displacement from x0 into x;
+ * *res = the largest equation residual relative to the largest coefficient times |x0|.
+ * Returns the rank, -1 when an end triple has no solution. */
+static int edge_solve(const edge_setup *q, double shift, double tol, double x0[6][3],
+                      double x[6][3], double *res)
+{
+    double cma[3], cmb[3];
+    /* both halves describe the same configuration at m: Y_B - m = -(Y_A - m), so the B half's
+     * coefficient of Y_B - m moves by -shift */
+    if (!end_at_midpoint(q->m, q->y0, q->ylp, q->yrp, q->nm, q->ca, shift, cma) ||
+        !end_at_midpoint(q->m, q->yb0, q->ylp, q->yrp, q->nm, q->cb, -shift, cmb))
+        return -1;
+    /* unknowns: 0 Y_A, 1 m, 2 P(t, A side), 3 P(u, A side), 4 P(t, B side), 5 P(u, B side) */
+    lin Ya = var2(0, 1, 0, 0), M = var2(1, 1, 1, 0), Yb = var2(1, 2, 0, -1);
+    lin NL = var2(2, 0.5, 4, 0.5), NR = var2(3, 0.5, 5, 0.5);
+    lin ma[4] = {known(q->A), known(q->ka), Ya, M}, mb[4] = {known(q->B), known(q->kb), Yb, M};
+    lin la[3] = {known(q->tn[0]), var2(2, 1, 2, 0), NL};
+    lin ra[3] = {known(q->un[0]), var2(3, 1, 3, 0), NR};
+    lin lb[3] = {known(q->tn[1]), var2(4, 1, 4, 0), NL};
+    lin rb[3] = {known(q->un[1]), var2(5, 1, 5, 0), NR};
+    double a[5][6] = {{0}}, b[5][3] = {{0}};
+    half_edge_rows(ma, la, ra, q->ca, cma, a, b);
+    half_edge_rows(mb, lb, rb, q->cb, cmb, a + 2, b + 2);
+    /* C3 at m (eq. 9.3d); the B half's C3 is the same relation of the same four points. */
+    acc(a[4], b[4], cma[0], &M, &Ya);
+    acc(a[4], b[4], cma[1], &NL, &Ya);
+    acc(a[4], b[4], cma[2], &NR, &Ya);
+    memcpy(x, x0, 6 * sizeof x[0]);
+    int rank = min_displacement(a, b, x, tol);
+    if (rank == 5) min_displacement(a, b, x, tol); /* one step of iterative refinement */
+    double worst = 0, amax = 0, xmax = 0;
+    for (int i = 0; i < 5; i++)
+        for (int d = 0; d < 3; d++) {
+            double r = b[i][d];
+            for (int c = 0; c < 6; c++) {
+                r -= a[i][c] * x[c][d];
+                amax = fmax(amax, fabs(a[i][c]));
+                xmax = fmax(xmax, fabs(x0[c][d]));
+            }
+            worst = fmax(worst, fabs(r));
+        }
+    *res = worst / (amax * fmax(xmax, 1e-300));
+    if (!isfinite(*res)) *res = INFINITY;
+    return rank;
+}
+
+static double displacement(double x0[6][3], double x[6][3]);
+static double spoke_ratio(double x0[6][3], double x[6][3]);
+
+/* A rank-deficient edge (a mirror plane through the edge makes f = g on both halves, so the
+ * equations see the two micro centres beside each half only through their sum: 4 unknown
+ * points for 5 equations) is in general inconsistent with the multipliers taken from the
+ * subdivision values at m. The coefficient of Y - m in the triple at m is one scalar the
+ * construction is free to choose (the shape of the configuration at m, any value keeps the
+ * four points coplanar); for one value the system is consistent. Measured on the once
+ * subdivided icosahedron's degree-5/degree-6 edges: the residual vanishes linearly (|r| ~
+ * |shift - shift*|) at one shift, with the midpoint spokes non-degenerate. We bracket it on a
+ * coarse grid and refine by golden section; x keeps the best solution found. */
+static void midpoint_multiplier_search(const edge_setup *q, double x0[6][3], double x[6][3],
+                                       double res0)
+{
+    enum { GRID = 40 };
+    const double lo = -0.5, hi = 0.5, step = (hi - lo) / GRID, g = 0.6180339887498949;
+    double grid[GRID + 1], y[6][3], r, ab[3], best = res0, pick[6][3];
+    int found = 0;
+    g1_sub(q->B, q->A, ab);
+    for (int i = 0; i <= GRID; i++)
+        if (edge_solve(q, lo + step * i, RANK_TOL, x0, y, &grid[i]) < 0) grid[i] = INFINITY;
+    /* The residual can have several roots; refine around every grid minimum and keep the most
+     * accurate solution that stays near the subdivision values (sphere.off and elephant.off
+     * have far roots whose solutions stretch the midpoint spokes 14-20000 times). */
+    for (int i = 0; i <= GRID; i++) {
+        if (!(grid[i] < res0) || (i > 0 && grid[i - 1] < grid[i]) ||
+            (i < GRID && grid[i + 1] < grid[i]))
+            continue;
+        double a = lo + step * (i - 1), b = lo + step * (i + 1), bt = lo + step * i,
+               bv = grid[i], rc, rd;
+        for (int it = 0; it < 80 && bv > 1e-16; it++) {
+            double c = b - g * (b - a), d = a + g * (b - a);
+            if (edge_solve(q, c, RANK_TOL, x0, y, &rc) < 0) rc = INFINITY;
+            if (edge_solve(q, d, RANK_TOL, x0, y, &rd) < 0) rd = INFINITY;
+            if (rc < rd) b = d; else a = c;
+            if (fmin(rc, rd) < bv) bv = fmin(rc, rd), bt = rc < rd ? c : d;
+        }
+        double z[6][3];
+        edge_solve(q, bt, RANK_TOL, x0, z, &r);
+        /* On a nearly (not exactly) symmetric edge the rank-4 solve leaves the small equation
+         * it dropped unsatisfied (residual ~1e-12 on elephant.off); with the multiplier found
+         * the full system is nearly consistent, so its full-rank solution stays close: take it
+         * when it is more accurate and moves the points at most twice as far. */
+        double rz = r;
+        if (edge_solve(q, bt, 1e-24, x0, y, &r) == 5 && r < rz &&
+            displacement(x0, y) <= 4 * displacement(x0, z))
+            memcpy(z, y, sizeof y), rz = r;
+        double sr = spoke_ratio(x0, z);
+        if (rz < best && sr >= 0.25 && sr <= 4 && sqrt(displacement(x0, z)) <= 0.5 * g1_length(ab))
+            memcpy(pick, z, sizeof z), best = rz, found = 1;
+    }
+    if (found) memcpy(x, pick, sizeof pick);
+}
+
+/* Squared displacement of x from x0 (the thesis's objective, §9.8 step 5, in squares). */
+static double displacement(double x0[6][3], double x[6][3])
+{
+    double s = 0;
+    for (int c = 0; c < 6; c++)
+        for (int d = 0; d < 3; d++)
+            s += (x[c][d] - x0[c][d]) * (x[c][d] - x0[c][d]);
+    return s;
+}
+
+/* The smaller of the two midpoint spokes |Nm - m| (T's and U's) relative to the same spoke
+ * in x0: how far the solution x has collapsed the corner at m. */
+static double spoke_ratio(double x0[6][3], double x[6][3])
+{
+    double worst = INFINITY;
+    for (int side = 0; side < 2; side++) {
+        double a = 0, b = 0;
+        for (int d = 0; d < 3; d++) {
+            double s1 = (x[2 + side][d] + x[4 + side][d]) / 2 - x[1][d];
+            double s0 = (x0[2 + side][d] + x0[4 + side][d]) / 2 - x0[1][d];
+            a += s1 * s1;
+            b += s0 * s0;
+        }
+        if (!(b > 0)) return INFINITY; /* no spoke to keep (or NaN input): nothing to search */
+        worst = fmin(worst, sqrt(a / b));
+    }
+    return worst;
+}
+
+/* On an independent edge every midpoint multiplier gives a consistent system, but the one
+ * taken from the subdivision values can be the worst choice: on the once subdivided
+ * icosahedron's degree-6/degree-6 edges (a mirror plane across the edge) its solution drives
+ * both midpoint spokes onto m (|Nm - m| ~ 1e-14: a degenerate corner, normals there jump by
+ * ~1 degree), and a shift of +-0.03 gives |Nm - m| = 0.057, about the subdivision value. Where
+ * the spokes shrink below half their subdivision length we take, among the shifts that keep
+ * them at least that long, the one of least displacement from the subdivision values (the
+ * thesis's objective, §9.8 step 5): a grid, then bisection towards the collapse, since the
+ * displacement grows away from it. Any shift keeps the edge G1; only the shape changes. */
+static void midpoint_spoke_search(const edge_setup *q, double x0[6][3], double x[6][3])
+{
+    enum { GRID = 80 };
+    const double lo = -0.5, hi = 0.5, step = (hi - lo) / GRID, keep = 0.5;
+    if (spoke_ratio(x0, x) >= keep) return;
+    double best = INFINITY, bt = 0, y[6][3], r;
+    for (int i = 0; i <= GRID; i++) {
+        double t = lo + step * i, v;
+        if (edge_solve(q, t, RANK_TOL, x0, y, &r) == 5 && r < 1e-13 &&
+            spoke_ratio(x0, y) >= keep && (v = displacement(x0, y)) < best)
+            best = v, bt = t;
+    }
+    if (!(best < INFINITY)) return;
+    /* towards the neighbour with the smaller displacement, stopping where the spokes would
+     * fall below `keep` */
+    double in = bt, out = INFINITY, vn = INFINITY;
+    for (int sgn = -1; sgn <= 1; sgn += 2) {
+        double t = bt + sgn * step, v;
+        if (edge_solve(q, t, RANK_TOL, x0, y, &r) == 5 && r < 1e-13 &&
+            (v = displacement(x0, y)) < vn)
+            vn = v, out = t;
+    }
+    if (vn < best)
+        for (int it = 0; it < 50; it++) {
+            double t = (in + out) / 2;
+            if (edge_solve(q, t, RANK_TOL, x0, y, &r) == 5 && r < 1e-13 &&
+                spoke_ratio(x0, y) >= keep && displacement(x0, y) <= best)
+                in = t, best = displacement(x0, y);
+            else
+                out = t;
+        }
+    if (edge_solve(q, in, RANK_TOL, x0, y, &r) == 5 && r < 1e-13) memcpy(x, y, sizeof y);
 }
 
 /* Step 5 on the macro edge of half-edge h (triangle t, edge k) and its twin (u, edge j). */
@@ -286,7 +475,7 @@ static int solve_edge(const fl_mesh *m, const double *normals, six_tri *tris, si
         yb0[d] = 2 * x[1][d] - y0[d];
     /* end triples: at A and B from the vertex tangent planes (eq. 9.3a), at m from the plane
      * there (eq. 9.3d) */
-    double ca[3], cb[3], cma[3], cmb[3], d0[3], l0[3], r0[3];
+    double ca[3], cb[3], d0[3], l0[3], r0[3];
     g1_sub(ka, A, d0);
     g1_sub(T->n[k], A, l0);
     g1_sub(U->n[j1], A, r0);
@@ -298,24 +487,31 @@ static int solve_edge(const fl_mesh *m, const double *normals, six_tri *tris, si
     if (!g1_edge_coefficients(d0, l0, r0, normals + 3 * m->tri[3 * t + (size_t)k1], &cb[0],
                               &cb[1], &cb[2]))
         return -1;
-    if (!end_at_midpoint(x[1], y0, ylp, yrp, nm, ca, cma) ||
-        !end_at_midpoint(x[1], yb0, ylp, yrp, nm, cb, cmb))
-        return -1;
-    /* unknowns: 0 Y_A, 1 m, 2 P(t, A side), 3 P(u, A side), 4 P(t, B side), 5 P(u, B side) */
-    lin Ya = var2(0, 1, 0, 0), M = var2(1, 1, 1, 0), Yb = var2(1, 2, 0, -1);
-    lin NL = var2(2, 0.5, 4, 0.5), NR = var2(3, 0.5, 5, 0.5);
-    lin ma[4] = {known(A), known(ka), Ya, M}, mb[4] = {known(B), known(kb), Yb, M};
-    lin la[3] = {known(T->n[k]), var2(2, 1, 2, 0), NL}, ra[3] = {known(U->n[j1]), var2(3, 1, 3, 0), NR};
-    lin lb[3] = {known(T->n[k1]), var2(4, 1, 4, 0), NL}, rb[3] = {known(U->n[j]), var2(5, 1, 5, 0), NR};
-    double a[5][6] = {{0}}, b[5][3] = {{0}};
-    half_edge_rows(ma, la, ra, ca, cma, a, b);
-    half_edge_rows(mb, lb, rb, cb, cmb, a + 2, b + 2);
-    /* C3 at m (eq. 9.3d); the B half's C3 is the same relation of the same four points. */
-    acc(a[4], b[4], cma[0], &M, &Ya);
-    acc(a[4], b[4], cma[1], &NL, &Ya);
-    acc(a[4], b[4], cma[2], &NR, &Ya);
-    int rank = min_displacement(a, b, x);
-    if (rank == 5) min_displacement(a, b, x); /* one step of iterative refinement */
+    edge_setup q;
+    memset(&q, 0, sizeof q);
+    memcpy(q.m, x[1], sizeof q.m);
+    memcpy(q.y0, y0, sizeof q.y0);
+    memcpy(q.yb0, yb0, sizeof q.yb0);
+    memcpy(q.ylp, ylp, sizeof q.ylp);
+    memcpy(q.yrp, yrp, sizeof q.yrp);
+    memcpy(q.nm, nm, sizeof q.nm);
+    memcpy(q.ca, ca, sizeof q.ca);
+    memcpy(q.cb, cb, sizeof q.cb);
+    q.A = A;
+    q.B = B;
+    q.ka = ka;
+    q.kb = kb;
+    q.tn[0] = T->n[k];
+    q.tn[1] = T->n[k1];
+    q.un[0] = U->n[j1];
+    q.un[1] = U->n[j];
+    double x0[6][3];
+    memcpy(x0, x, sizeof x0);
+    double res = 0;
+    int rank = edge_solve(&q, 0, RANK_TOL, x0, x, &res);
+    if (rank < 0) return -1;
+    if (rank < 5 && res > 1e-13) midpoint_multiplier_search(&q, x0, x, res);
+    if (rank == 5) midpoint_spoke_search(&q, x0, x);
     six_edge *E = edges + h, *F = edges + h2;
     memcpy(E->m, x[1], sizeof E->m);
     memcpy(E->ya, x[0], sizeof E->ya);

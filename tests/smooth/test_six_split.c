@@ -1,11 +1,11 @@
 /* Properties of the six-split surfaces (thesis §9.8) on closed meshes: octahedron,
  * icosahedron, a cube split into triangles (mirror-symmetric edges), a perturbed convex hull of
- * random points and the demo torus. The G1 oracle (g1_oracle.h) pairs patch edges by sorting
+ * random points, the demo torus and the once subdivided icosahedron. The G1 oracle (g1_oracle.h) pairs patch edges by sorting
  * and compares the two patches' normals at many points, independently of the library. */
 #include "cli/cli_run.h"
 #include "g1_oracle.h"
 
-enum { MESHES = 5 };
+enum { MESHES = 6 };
 
 /* The convex hull (fl_dt3 hull faces, exact) of 60 random points at radius 1 +- 5%: a closed
  * convex mesh without symmetry, its vertices compacted. */
@@ -65,6 +65,10 @@ static fl_mesh test_mesh(int i)
         return g1_cube();
     case 3:
         return hull_mesh();
+    case 5:
+        /* once subdivided: mirror planes along the degree-5/6 edges (rank-deficient step 5)
+         * and across the degree-6/6 edges (spokes collapse without the midpoint search) */
+        return g1_icosphere(1, 0, 1);
     default:
         CHECK_STATUS(fl_read_mesh(FL_SOURCE_DIR "/data/demo/torus.off", &m, &err), FL_OK, &err);
         return m;

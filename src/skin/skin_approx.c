@@ -46,7 +46,8 @@ static fl_status round_once(const fl_mesh *mesh, skin_eps_grid *g, double eps, d
                             const fl_skin_approx_options *o, fl_skin_approx *a, fl_error *err)
 {
     skin_eps_sample smp;
-    fl_status st = skin_eps_surface_balls(mesh, rho, SKIN_GAMMA, o->max_balls, &smp, err);
+    fl_status st = skin_eps_surface_balls(mesh, rho, SKIN_GAMMA, o->max_balls, o->placement, &smp,
+                                          err);
     if (st != FL_OK) return st;
     a->surface = smp.balls;
     a->boundary_balls = smp.boundary_count;
@@ -105,9 +106,11 @@ fl_status fl_skin_approx_build(const fl_mesh *mesh, double epsilon,
     fl_skin_approx_options o = {0};
     if (opt) o = *opt;
     if (o.t == 0) o.t = 0.5;
-    if (!(o.t > 0 && o.t < 1) || !(o.cell >= 0) || o.max_rounds < 0 || !(o.budget_seconds >= 0))
+    if (!(o.t > 0 && o.t < 1) || !(o.cell >= 0) || o.max_rounds < 0 || !(o.budget_seconds >= 0) ||
+        (o.placement != FL_SKIN_PLACE_ALGORITHM1 && o.placement != FL_SKIN_PLACE_SUBDIVISION))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
-                       "skin: t must be in (0, 1), cell, rounds and budget >= 0");
+                       "skin: t must be in (0, 1), cell, rounds and budget >= 0, placement one "
+                       "of fl_skin_placement");
     if (!(epsilon > 0) || !isfinite(epsilon))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: epsilon must be finite and > 0");
     if (o.max_rounds == 0) o.max_rounds = 3;

@@ -12,7 +12,8 @@
 
 static const char *usage_text =
     "usage: flintstone skin --balls BALLS [--t T] [--cell H] [-o SKIN.off] [--json] [--quiet]\n"
-    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [-o SKIN.off] [--json]\n"
+    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [--placement P] [-o SKIN.off]\n"
+    "       [--json]\n"
     "\n"
     "Triangulates the skin surface skin^t(B) of a ball set: the boundary of the union of the\n"
     "convex combinations of the balls, each shrunk to sqrt(t) times its radius. BALLS holds one\n"
@@ -27,6 +28,7 @@ static const char *usage_text =
     "  --balls B    the ball set\n"
     "  --epsilon E  with MESH: the Hausdorff tolerance (> 0)\n"
     "  --t T        shrink factor in (0, 1), default 0.5\n"
+    "  --placement P  with MESH: alg1 (default, §4.2 Algorithm 1) or subdivision (see balls)\n"
     "  --cell H     grid spacing (default: sqrt(t) times the smallest radius / 4, smaller for\n"
     "               thin necks; with MESH: 0.4 E); features thinner than H can be missed\n"
     "  -o FILE      the mesh (.off .obj .ply .stl)\n"
@@ -40,7 +42,7 @@ static const char *usage_text =
 typedef struct skin_args {
     const char *balls, *mesh;
     double t, cell, epsilon;
-    int has_epsilon;
+    int has_epsilon, placement;
 } skin_args;
 
 static int parse(int argc, char **argv, cli_common *c, skin_args *a)
@@ -51,7 +53,7 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
         if (r > 0) continue;
         const char *o = argv[i];
         int value = !strcmp(o, "--balls") || !strcmp(o, "--t") || !strcmp(o, "--cell") ||
-                    !strcmp(o, "--epsilon");
+                    !strcmp(o, "--epsilon") || !strcmp(o, "--placement");
         if (value && i + 1 >= argc) return cli_fail(1, "skin: %s needs a value", o);
         if (!strcmp(o, "--balls")) {
             a->balls = argv[++i];
@@ -67,6 +69,14 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
                 !isfinite(a->epsilon))
                 return cli_fail(2, "skin: --epsilon takes a finite number > 0");
             a->has_epsilon = 1;
+        } else if (!strcmp(o, "--placement")) {
+            const char *v = argv[++i];
+            if (!strcmp(v, "alg1"))
+                a->placement = FL_SKIN_PLACE_ALGORITHM1;
+            else if (!strcmp(v, "subdivision"))
+                a->placement = FL_SKIN_PLACE_SUBDIVISION;
+            else
+                return cli_fail(1, "skin: --placement takes alg1 or subdivision");
         } else if (o[0] == '-' && o[1]) {
             return cli_fail(1, "skin: unknown option '%s' (see --help)", o);
         } else if (!a->mesh) {
@@ -118,6 +128,7 @@ static int skin_of_mesh(const cli_common *c, const skin_args *a)
         fl_skin_approx_options opt = {0};
         opt.t = a->t;
         opt.cell = a->cell;
+        opt.placement = a->placement;
         opt.progress = cli_progress_fn;
         opt.progress_user = &prog;
         st = fl_skin_approx_build(&mesh, a->epsilon, &opt, &ap, &err);

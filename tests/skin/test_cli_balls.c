@@ -107,6 +107,9 @@ static void test_cli_balls_rejects_open_mesh_and_bad_epsilon(void)
     CHECK_EQ_INT(cli_run(&r, "balls cli_balls_ok.off --epsilon 0"), 2);
     CHECK_EQ_INT(cli_run(&r, "balls cli_balls_ok.off --epsilon nan"), 2);
     CHECK_EQ_INT(cli_run(&r, "skin cli_balls_ok.off --epsilon -1"), 2);
+    CHECK_EQ_INT(cli_run(&r, "balls cli_balls_ok.off --epsilon 0.5 --placement voronoi"), 1);
+    CHECK_MSG(strstr(r.err, "alg1 or subdivision") != NULL, "%s", r.err);
+    CHECK_EQ_INT(cli_run(&r, "skin cli_balls_ok.off --epsilon 0.5 --placement"), 1);
     CHECK_EQ_INT(cli_run(&r, "balls cli_balls_ok.off"), 1);
     CHECK_EQ_INT(cli_run(&r, "skin cli_balls_ok.off"), 1);
     CHECK_EQ_INT(cli_run(&r, "balls --help"), 0);

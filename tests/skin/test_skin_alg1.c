@@ -8,7 +8,9 @@
  *  - |K_B| = |P| (Theorem 5, P1 + P2): every simplex of the alpha complex of B (alpha = 0,
  *    from the regular triangulation fl_rt3 and the alpha oracle of skin_oracle.h's method)
  *    lies in one mesh triangle, there is no alpha tetrahedron, and the alpha triangles inside
- *    each mesh triangle have the triangle's area (they tile it);
+ *    each mesh triangle have the triangle's area (they tile it) -- cube and tetrahedron only
+ *    (O(simplices x balls)); shrinking every ball by 2.5 % makes this check fail on 12 of the
+ *    cube's triangles (tried by hand; the 561-point sampling alone missed such thin gaps);
  *  - the whole approximation on a genus-1 torus: verified, Euler 0, Hausdorff <= eps;
  *  - the tetrahedron at eps 0.3 (the subdivision placement failed its Euler check there). */
 #include <math.h>
@@ -342,34 +344,38 @@ static size_t check_alpha_complex(const fl_mesh *m, const fl_balls *b, const cha
     return bad;
 }
 
-static void check_all(const fl_mesh *m, double eps, const char *name)
+/* alpha: also the alpha-complex check (O(simplices x balls), too slow for the torus's 2736
+ * balls under ASan) */
+static void check_all(const fl_mesh *m, double eps, int alpha, const char *name)
 {
     skin_eps_sample s = balls_of(m, eps);
     CHECK_MSG(check_c1_c2_left(m, &s.balls, 0.8 * eps, name) == 0, "%s eps %g: C1/C2/radius",
               name, eps);
     CHECK_MSG(check_coverage(m, &s.balls, name) == 0, "%s eps %g: coverage (C2)", name, eps);
-    CHECK_MSG(check_alpha_complex(m, &s.balls, name) == 0, "%s eps %g: |K_B| = |P|", name, eps);
+    if (alpha)
+        CHECK_MSG(check_alpha_complex(m, &s.balls, name) == 0, "%s eps %g: |K_B| = |P|", name,
+                  eps);
     skin_eps_sample_free(&s);
 }
 
 static void test_cube_balls_satisfy_theorem5(void)
 {
     fl_mesh m = mesh_of(cube_xyz, 8, cube_tri, 12);
-    check_all(&m, 0.5, "cube");
-    check_all(&m, 0.25, "cube");
+    check_all(&m, 0.5, 1, "cube");
+    check_all(&m, 0.25, 1, "cube");
 }
 
 static void test_tetrahedron_balls_satisfy_theorem5(void)
 {
     fl_mesh m = mesh_of(tet_xyz, 4, tet_tri, 4);
-    check_all(&m, 0.5, "tetrahedron");
-    check_all(&m, 0.3, "tetrahedron");
+    check_all(&m, 0.5, 1, "tetrahedron");
+    check_all(&m, 0.3, 1, "tetrahedron");
 }
 
 static void test_coarse_torus_balls_satisfy_theorem5(void)
 {
     fl_mesh m = torus(8, 4);
-    check_all(&m, 1.0, "torus 8x4");
+    check_all(&m, 1.0, 0, "torus 8x4");
     free(m.xyz);
     free(m.tri);
 }

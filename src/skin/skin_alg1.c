@@ -22,7 +22,9 @@
 
 #include "skin/skin_sampler.h"
 
-enum { MAXV = 40, ELEMENT_CAP = 200000 };
+/* MAXV: a cell next to many small balls near an edge has many sides (40 was exceeded on the
+ * cube at eps 0.015); more fails with FL_ERR_ALGORITHM. */
+enum { MAXV = 96, ELEMENT_CAP = 200000 };
 
 typedef struct cell2 {
     double c[2], w; /* centre in the triangle's 2D frame, weight */

@@ -1755,7 +1755,9 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
  * restricted power diagram of the balls so far, until none is left); the older placement
  * (bisecting edges, 4-splitting triangles) stays available. The result is also verified: the certified Hausdorff distance between the
  * triangulated skin^t(B*) and the input is <= epsilon, their Euler characteristics agree and
- * the skin mesh is closed and manifold, else rho shrinks (x0.7) and the construction repeats.
+ * the skin mesh is closed and manifold, else the construction repeats: with a finer mesher grid
+ * (x0.4) after a wrong Euler characteristic (the default cell only), with smaller balls (rho
+ * x0.7) after a Hausdorff miss.
  * B_perp (§5): orthogonal balls of the regular-triangulation tetrahedra of B whose orthocentre
  * lies inside the object (ray parity, winding number near degeneracies) and whose weight is
  * positive.
@@ -1772,8 +1774,9 @@ typedef enum fl_skin_placement {
 /* Options of fl_skin_approx; all zero is the default. */
 typedef struct fl_skin_approx_options {
     double t;           /* shrink factor of the verified skin, in (0, 1); 0 means 0.5 */
-    double cell;        /* mesher grid spacing; 0 means rho / 2 */
-    int max_rounds;     /* constructions tried (rho = 0.8 eps, then x0.7 each); 0 means 3 */
+    double cell;        /* mesher grid spacing; 0 means rho / 2 (finer in later rounds) */
+    int max_rounds;     /* constructions tried (rho = 0.8 eps and cell rho / 2, then cell
+                         * x0.4 or rho x0.7 each, see above); 0 means 3 */
     size_t max_balls;   /* refuse more protecting balls than this (FL_ERR_INPUT); 0 means 1e6 */
     double budget_seconds; /* Hausdorff budget per round (still certified); 0 means 60 */
     fl_progress_fn progress; /* may be NULL; stages "skin balls", "skin", "hausdorff" */

@@ -109,8 +109,7 @@ fl_status skin_alg1_edge(skin_sampler *s, size_t e, fl_error *err)
                          e, bestp);
             break;
         }
-        if ((st = skin_sampler_tick(s, 0, 1, err)) || (st = element_cap(cells.count, err)))
-            break;
+        if ((st = skin_sampler_tick(s, 0, 1, err)) || (st = element_cap(cells.count, err))) break;
         double p[3] = {a[0] + u / len * ab[0], a[1] + u / len * ab[1], a[2] + u / len * ab[2]};
         double r = skin_sampler_radius(s, p, 1, ids, 0);
         if ((st = skin_sampler_push(s, p, r, 1, (uint32_t)e, err))) break;
@@ -151,8 +150,8 @@ static void cell_measure(cell2 *c)
 static int clip2(cell2 *a, const cell2 *b)
 {
     double d[2] = {b->c[0] - a->c[0], b->c[1] - a->c[1]};
-    double h = d[0] * 0.5 * (a->c[0] + b->c[0]) + d[1] * 0.5 * (a->c[1] + b->c[1]) +
-               0.5 * (a->w - b->w);
+    double h =
+        d[0] * 0.5 * (a->c[0] + b->c[0]) + d[1] * 0.5 * (a->c[1] + b->c[1]) + 0.5 * (a->w - b->w);
     double sv[MAXV];
     int out = 0;
     for (int k = 0; k < a->n; k++) {
@@ -216,7 +215,8 @@ static void frame_of(const fl_mesh *m, const uint32_t *t, frame2 *fr)
         n2 += fr->e2[k] * fr->e2[k];
     }
     n2 = sqrt(n2);
-    for (int k = 0; k < 3; k++) fr->e2[k] /= n2;
+    for (int k = 0; k < 3; k++)
+        fr->e2[k] /= n2;
     fr->q[0][0] = fr->q[0][1] = 0;
     fr->q[1][0] = n1;
     fr->q[1][1] = 0;
@@ -308,7 +308,8 @@ static fl_status fill_triangle(skin_sampler *s, size_t f, const frame2 *fr, fl_v
         if (!st) st = element_cap(cells->count, err);
         if (st) return st;
         double p[3];
-        for (int k = 0; k < 3; k++) p[k] = fr->o[k] + u[0] * fr->e1[k] + u[1] * fr->e2[k];
+        for (int k = 0; k < 3; k++)
+            p[k] = fr->o[k] + u[0] * fr->e1[k] + u[1] * fr->e2[k];
         double r = skin_sampler_radius(s, p, 2, t, f);
         if ((st = skin_sampler_push(s, p, r, 2, (uint32_t)f, err))) return st;
         if ((st = insert2(cells, fr, u, r * r, err))) return st;

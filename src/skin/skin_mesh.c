@@ -370,7 +370,8 @@ static int collect_bitmap(const marcher *m, const double *xyzw, size_t n, size_t
         for (uint64_t z = lo[2]; z <= hi[2]; z++)
             for (uint64_t y = lo[1]; y <= hi[1]; y++)
                 for (uint64_t x = lo[0]; x <= hi[0]; x++) {
-                    size_t id = (size_t)(((z - glo[2]) * d[1] + (y - glo[1])) * d[0] + (x - glo[0]));
+                    size_t id =
+                        (size_t)(((z - glo[2]) * d[1] + (y - glo[1])) * d[0] + (x - glo[0]));
                     unique += !(bits[id >> 3] & (1u << (id & 7)));
                     bits[id >> 3] |= (uint8_t)(1u << (id & 7));
                 }

@@ -48,8 +48,8 @@ static fl_mesh torus(int nu, int nv)
     m.tri = malloc(3 * m.triangle_count * sizeof(uint32_t));
     for (int i = 0; i < nu; i++)
         for (int j = 0; j < nv; j++) {
-            double u = 2 * 3.14159265358979323846 * i / nu,
-                   v = 2 * 3.14159265358979323846 * j / nv, *p = m.xyz + 3 * (i * nv + j);
+            double u = 2 * 3.14159265358979323846 * i / nu, v = 2 * 3.14159265358979323846 * j / nv,
+                   *p = m.xyz + 3 * (i * nv + j);
             p[0] = (2 + 0.75 * cos(v)) * cos(u);
             p[1] = (2 + 0.75 * cos(v)) * sin(u);
             p[2] = 0.75 * sin(v);
@@ -81,14 +81,16 @@ static ld dist_seg(const double *p, const double *a, const double *b)
     s = l2 > 0 ? s / l2 : 0;
     s = s < 0 ? 0 : s > 1 ? 1 : s;
     ld d = 0;
-    for (int c = 0; c < 3; c++) d += (ap[c] - s * ab[c]) * (ap[c] - s * ab[c]);
+    for (int c = 0; c < 3; c++)
+        d += (ap[c] - s * ab[c]) * (ap[c] - s * ab[c]);
     return sqrtl(d);
 }
 
 static ld dist_pt(const double *p, const double *a)
 {
     ld d = 0;
-    for (int c = 0; c < 3; c++) d += ((ld)p[c] - a[c]) * ((ld)p[c] - a[c]);
+    for (int c = 0; c < 3; c++)
+        d += ((ld)p[c] - a[c]) * ((ld)p[c] - a[c]);
     return sqrtl(d);
 }
 
@@ -104,12 +106,14 @@ static ld dist_tri(const double *p, const double *a, const double *b, const doub
     n[0] = u[1] * v[2] - u[2] * v[1];
     n[1] = u[2] * v[0] - u[0] * v[2];
     n[2] = u[0] * v[1] - u[1] * v[0];
-    ld nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2], h = (w[0] * n[0] + w[1] * n[1] + w[2] * n[2]) / nn;
+    ld nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2],
+       h = (w[0] * n[0] + w[1] * n[1] + w[2] * n[2]) / nn;
     ld q[3] = {w[0] - h * n[0], w[1] - h * n[1], w[2] - h * n[2]}; /* projection, from a */
     ld s1 = 0, s2 = 0, s3 = 0;
     /* barycentric signs through the cross products with n */
     ld e1[3] = {u[1] * q[2] - u[2] * q[1], u[2] * q[0] - u[0] * q[2], u[0] * q[1] - u[1] * q[0]};
-    ld vq[3] = {q[0] - v[0], q[1] - v[1], q[2] - v[2]}, uv[3] = {v[0] - u[0], v[1] - u[1], v[2] - u[2]};
+    ld vq[3] = {q[0] - v[0], q[1] - v[1], q[2] - v[2]},
+       uv[3] = {v[0] - u[0], v[1] - u[1], v[2] - u[2]};
     ld qu[3] = {q[0] - u[0], q[1] - u[1], q[2] - u[2]};
     ld e2[3] = {uv[1] * qu[2] - uv[2] * qu[1], uv[2] * qu[0] - uv[0] * qu[2],
                 uv[0] * qu[1] - uv[1] * qu[0]};
@@ -159,9 +163,9 @@ static skin_eps_sample balls_of(const fl_mesh *m, double eps)
 {
     skin_eps_sample s;
     fl_error err;
-    CHECK_STATUS(skin_eps_surface_balls(m, 0.8 * eps, 0.45, 1000000, FL_SKIN_PLACE_ALGORITHM1, &s,
-                                        &err),
-                 FL_OK, &err);
+    CHECK_STATUS(
+        skin_eps_surface_balls(m, 0.8 * eps, 0.45, 1000000, FL_SKIN_PLACE_ALGORITHM1, &s, &err),
+        FL_OK, &err);
     return s;
 }
 
@@ -199,7 +203,8 @@ static size_t check_c1_c2_left(const fl_mesh *m, const fl_balls *b, double rmax,
             int common = 0;
             for (size_t f = 0; f < m->triangle_count && !common; f++)
                 common = in_tri(m, f, p, tol) && in_tri(m, f, q, tol);
-            if (!common && bad++ < 5) fprintf(stderr, "  %s: balls %zu and %zu meet across\n", name, i, j);
+            if (!common && bad++ < 5)
+                fprintf(stderr, "  %s: balls %zu and %zu meet across\n", name, i, j);
         }
     }
     return bad;
@@ -216,13 +221,14 @@ static size_t check_coverage(const fl_mesh *m, const fl_balls *b, const char *na
             for (int j = 0; i + j <= N; j++) {
                 double x[3];
                 for (int c = 0; c < 3; c++)
-                    x[c] = (V(m, f, 0)[c] * (N - i - j) + V(m, f, 1)[c] * i + V(m, f, 2)[c] * j) / N;
+                    x[c] =
+                        (V(m, f, 0)[c] * (N - i - j) + V(m, f, 1)[c] * i + V(m, f, 2)[c] * j) / N;
                 int in = 0;
                 for (size_t k = 0; k < b->count && !in; k++)
                     in = dist_pt(x, b->xyzw + 4 * k) <= sqrtl(b->xyzw[4 * k + 3]) * (1 + 1e-8L);
                 if (!in && bad++ < 5)
-                    fprintf(stderr, "  %s: (%g %g %g) of triangle %zu not covered\n", name, x[0], x[1],
-                                 x[2], f);
+                    fprintf(stderr, "  %s: (%g %g %g) of triangle %zu not covered\n", name, x[0],
+                            x[1], x[2], f);
             }
     return bad;
 }
@@ -232,7 +238,8 @@ static size_t check_coverage(const fl_mesh *m, const fl_balls *b, const char *na
 static ld power_ld(const double *b, const ld *f)
 {
     ld d = -(ld)b[3];
-    for (int c = 0; c < 3; c++) d += (f[c] - b[c]) * (f[c] - b[c]);
+    for (int c = 0; c < 3; c++)
+        d += (f[c] - b[c]) * (f[c] - b[c]);
     return d;
 }
 
@@ -259,7 +266,8 @@ static size_t check_alpha_complex(const fl_mesh *m, const fl_balls *b, const cha
                     x->v[j - 1] = tmp;
                 }
             x->k = k - 1;
-            for (int i = k; i < 4; i++) x->v[i] = UINT32_MAX;
+            for (int i = k; i < 4; i++)
+                x->v[i] = UINT32_MAX;
         }
     fl_rt3_free(&rt);
     qsort(s, ns, sizeof *s, oracle_cmp);
@@ -267,7 +275,8 @@ static size_t check_alpha_complex(const fl_mesh *m, const fl_balls *b, const cha
     for (size_t i = 0; i < ns; i++)
         if (u == 0 || oracle_cmp(&s[i], &s[u - 1])) s[u++] = s[i];
     ns = u;
-    for (size_t i = 0; i < ns; i++) s[i].alpha = HUGE_VALL;
+    for (size_t i = 0; i < ns; i++)
+        s[i].alpha = HUGE_VALL;
     double *area = calloc(m->triangle_count, sizeof(double));
     for (int k = 3; k >= 0; k--) {
         for (size_t i = 0; i < ns; i++) {
@@ -276,8 +285,7 @@ static size_t check_alpha_complex(const fl_mesh *m, const fl_balls *b, const cha
             if (oracle_focus(b->xyzw, s[i].v, k, f, &w)) continue; /* flat: cofaces decide */
             int in_cell = 1;
             for (size_t j = 0; j < b->count && in_cell; j++) {
-                if (j == s[i].v[0] || j == s[i].v[1] || j == s[i].v[2] || j == s[i].v[3])
-                    continue;
+                if (j == s[i].v[0] || j == s[i].v[1] || j == s[i].v[2] || j == s[i].v[3]) continue;
                 in_cell = !(power_ld(b->xyzw + 4 * j, f) < w);
             }
             if (in_cell && w < s[i].alpha) s[i].alpha = w;
@@ -310,7 +318,8 @@ static size_t check_alpha_complex(const fl_mesh *m, const fl_balls *b, const cha
             if (all) host = f;
         }
         if (host == SIZE_MAX) {
-            if (bad++ < 5) fprintf(stderr, "  %s: an alpha %d-simplex off the mesh\n", name, s[i].k);
+            if (bad++ < 5)
+                fprintf(stderr, "  %s: an alpha %d-simplex off the mesh\n", name, s[i].k);
             continue;
         }
         if (s[i].k == 2) {
@@ -349,12 +358,11 @@ static size_t check_alpha_complex(const fl_mesh *m, const fl_balls *b, const cha
 static void check_all(const fl_mesh *m, double eps, int alpha, const char *name)
 {
     skin_eps_sample s = balls_of(m, eps);
-    CHECK_MSG(check_c1_c2_left(m, &s.balls, 0.8 * eps, name) == 0, "%s eps %g: C1/C2/radius",
-              name, eps);
+    CHECK_MSG(check_c1_c2_left(m, &s.balls, 0.8 * eps, name) == 0, "%s eps %g: C1/C2/radius", name,
+              eps);
     CHECK_MSG(check_coverage(m, &s.balls, name) == 0, "%s eps %g: coverage (C2)", name, eps);
     if (alpha)
-        CHECK_MSG(check_alpha_complex(m, &s.balls, name) == 0, "%s eps %g: |K_B| = |P|", name,
-                  eps);
+        CHECK_MSG(check_alpha_complex(m, &s.balls, name) == 0, "%s eps %g: |K_B| = |P|", name, eps);
     skin_eps_sample_free(&s);
 }
 
@@ -394,8 +402,8 @@ static void check_approx(const fl_mesh *m, double eps, long long euler, const ch
     fl_mesh_check_options co = {0};
     co.skip_self_intersections = 1;
     CHECK_STATUS(fl_mesh_check(&a.skin, &co, &rep, &err), FL_OK, &err);
-    CHECK_MSG(rep.closed && rep.manifold && rep.euler == euler, "%s: closed %d manifold %d euler %lld",
-              name, rep.closed, rep.manifold, rep.euler);
+    CHECK_MSG(rep.closed && rep.manifold && rep.euler == euler,
+              "%s: closed %d manifold %d euler %lld", name, rep.closed, rep.manifold, rep.euler);
     fl_mesh_report_free(&rep);
     fl_skin_approx_free(&a);
 }

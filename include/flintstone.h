@@ -1785,11 +1785,14 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
 /* ---- ε-approximation of a polyhedron by balls (Cheng & Tan §5, §6.2; docs/skin.md) ----
  * B: protecting balls centred on the mesh, each of radius min(0.45 lgs(centre), rho) with lgs
  * the local gap size (§4) and rho = 0.8 epsilon, covering every vertex, edge and triangle, so
- * conditions C1/C2 of Theorem 5 hold. They are placed by bisecting edges and 4-splitting
- * triangles instead of at restricted Voronoi vertices (Algorithm 1); counts therefore differ
- * from the paper's. The result is also verified: the certified Hausdorff distance between the
+ * conditions C1/C2 of Theorem 5 hold. By default they are placed by Algorithm 1 (§4.2: a ball
+ * on every vertex, then on each edge and each triangle a ball at the positive vertex of the
+ * restricted power diagram of the balls so far, until none is left); the older placement
+ * (bisecting edges, 4-splitting triangles) stays available. The result is also verified: the certified Hausdorff distance between the
  * triangulated skin^t(B*) and the input is <= epsilon, their Euler characteristics agree and
- * the skin mesh is closed and manifold, else rho shrinks (x0.7) and the construction repeats.
+ * the skin mesh is closed and manifold, else the construction repeats: with a finer mesher grid
+ * (x0.4) after a wrong Euler characteristic (the default cell only), with smaller balls (rho
+ * x0.7) after a Hausdorff miss.
  * B_perp (§5): orthogonal balls of the regular-triangulation tetrahedra of B whose orthocentre
  * lies inside the object (ray parity, winding number near degeneracies) and whose weight is
  * positive.
@@ -1797,15 +1800,23 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
  * triangles of the regular triangulation whose focus lies in their power face at negative
  * power (the alpha simplices of B with z_X^perp non-empty). */
 
+/* How the protecting balls B are placed (fl_skin_approx_options.placement). */
+typedef enum fl_skin_placement {
+    FL_SKIN_PLACE_ALGORITHM1 = 0, /* §4.2 Algorithm 1: restricted power diagram vertices */
+    FL_SKIN_PLACE_SUBDIVISION = 1 /* bisect edges / 4-split triangles until covered */
+} fl_skin_placement;
+
 /* Options of fl_skin_approx; all zero is the default. */
 typedef struct fl_skin_approx_options {
     double t;           /* shrink factor of the verified skin, in (0, 1); 0 means 0.5 */
-    double cell;        /* mesher grid spacing; 0 means rho / 2 */
-    int max_rounds;     /* constructions tried (rho = 0.8 eps, then x0.7 each); 0 means 3 */
+    double cell;        /* mesher grid spacing; 0 means rho / 2 (finer in later rounds) */
+    int max_rounds;     /* constructions tried (rho = 0.8 eps and cell rho / 2, then cell
+                         * x0.4 or rho x0.7 each, see above); 0 means 3 */
     size_t max_balls;   /* refuse more protecting balls than this (FL_ERR_INPUT); 0 means 1e6 */
     double budget_seconds; /* Hausdorff budget per round (still certified); 0 means 60 */
     fl_progress_fn progress; /* may be NULL; stages "skin balls", "skin", "hausdorff" */
     void *progress_user;
+    int placement;      /* fl_skin_placement; 0 (Algorithm 1) is the default */
 } fl_skin_approx_options;
 
 /* The result of fl_skin_approx. Free with fl_skin_approx_free. */

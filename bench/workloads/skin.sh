@@ -73,3 +73,32 @@ for spec in "${cases[@]}"; do
   run_case "$1 $2 (cell x$factor)" "$balls" --cell "$(awk -v r="$rmin" -v f="$factor" \
     'BEGIN { printf "%.9g", f * sqrt(0.5) * r / 4 }')"
 done
+
+# The epsilon mode (issue #12): `flintstone skin MESH --epsilon E --star B*` builds the verified
+# approximation (Algorithm 1 balls, B_perp, B*); then both meshers triangulate skin^t(B*) of the
+# same B* at t = 0.5 (ours at the grid cell the approximation used). SKIN_EPS_CASES: ';'-separated
+# "cube E" or "torus NU NV E" (R = 2, r = 0.75, genus 1); "" skips the mode.
+gen_cube() {
+  printf 'OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n'
+  printf '3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n'
+  printf '3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n'
+}
+gen_torus() { # NU NV
+  awk -v nu="$1" -v nv="$2" 'BEGIN { pi = 3.14159265358979; print "OFF"; print nu * nv, 2 * nu * nv, 0
+    for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) { u = 2 * pi * i / nu; v = 2 * pi * j / nv
+      printf "%.17g %.17g %.17g\n", (2 + 0.75 * cos(v)) * cos(u), (2 + 0.75 * cos(v)) * sin(u), 0.75 * sin(v) }
+    for (i = 0; i < nu; i++) for (j = 0; j < nv; j++) { a = i * nv + j; b = ((i + 1) % nu) * nv + j
+      c = ((i + 1) % nu) * nv + (j + 1) % nv; d = i * nv + (j + 1) % nv
+      print 3, a, b, c; print 3, a, c, d } }'
+}
+IFS=';' read -r -a eps_cases <<<"${SKIN_EPS_CASES-cube 0.5;torus 8 4 1.0}"
+for spec in "${eps_cases[@]}"; do
+  set -- $spec
+  if [ "$1" = cube ]; then mesh=$out/cube.off; gen_cube >"$mesh"; name="cube eps $2"; eps=$2
+  else mesh=$out/torus_$2x$3.off; gen_torus "$2" "$3" >"$mesh"; name="torus $2x$3 eps $4"; eps=$4; fi
+  e_json=$("$fl" skin "$mesh" --epsilon "$eps" --star "$out/star.xyzw" --json) ||
+    { echo "ERROR|skin $name|approximation not verified"; continue; }
+  echo "NOTE|skin $name|approximation: $e_json"
+  run_case "$name, B* of $(wc -l <"$out/star.xyzw") balls" "$out/star.xyzw" \
+    --cell "$(sed -n 's/.*"cell":\([^,}]*\).*/\1/p' <<<"$e_json")"
+done

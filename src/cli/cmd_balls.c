@@ -10,18 +10,23 @@
 #include "core/core.h"
 
 static const char *usage_text =
-    "usage: flintstone balls MESH --epsilon E [--t T] [-o BALLS.txt] [--json] [--quiet]\n"
+    "usage: flintstone balls MESH --epsilon E [--t T] [--placement P] [-o BALLS.txt] [--json]\n"
+    "       [--quiet]\n"
     "\n"
     "Approximates the object bounded by MESH (a closed, oriented, 2-manifold triangle mesh\n"
     "without self-intersections: .off .obj .ply .stl) by a union of balls B_perp (Cheng & Tan\n"
-    "§4-5): protecting balls B of radius <= 0.8 E on the surface, then the orthogonal balls of\n"
+    "§4-5): protecting balls B of radius <= 0.8 E on the surface (placed by Algorithm 1 of §4.2\n"
+    "at the positive vertices of restricted power diagrams), then the orthogonal balls of\n"
     "the Voronoi vertices of B inside the object. The result is verified, not only constructed:\n"
     "the skin surface of B* (B_perp and the negative orthogonal balls of §6.2) is meshed and its\n"
     "certified Hausdorff distance to MESH must be <= E with the same Euler characteristic;\n"
-    "otherwise the balls shrink and the construction repeats (3 rounds), then it fails.\n"
+    "otherwise the construction repeats (3 rounds: a finer skin grid after a wrong Euler\n"
+    "characteristic, smaller balls after a Hausdorff miss), then it fails.\n"
     "\n"
     "  --epsilon E  the Hausdorff tolerance (> 0, in the mesh's units)\n"
     "  --t T        shrink factor of the verifying skin in (0, 1), default 0.5\n"
+    "  --placement P  how B is placed: alg1 (default, §4.2 Algorithm 1) or subdivision\n"
+    "               (bisect edges, 4-split triangles until covered)\n"
     "  -o FILE      B_perp, one \"x y z r\" line a ball (r the radius)\n"
     "  --json       balls (|B_perp|), boundary_balls (|B|, on the surface), epsilon,\n"
     "               hausdorff_upper (certified, skin of B* to MESH), euler, euler_input,\n"
@@ -32,7 +37,7 @@ static const char *usage_text =
 typedef struct balls_args {
     const char *mesh;
     double epsilon, t;
-    int has_epsilon;
+    int has_epsilon, placement;
 } balls_args;
 
 static int parse(int argc, char **argv, cli_common *c, balls_args *a)
@@ -42,7 +47,7 @@ static int parse(int argc, char **argv, cli_common *c, balls_args *a)
         if (r < 0) return 1;
         if (r > 0) continue;
         const char *o = argv[i];
-        int value = !strcmp(o, "--epsilon") || !strcmp(o, "--t");
+        int value = !strcmp(o, "--epsilon") || !strcmp(o, "--t") || !strcmp(o, "--placement");
         if (value && i + 1 >= argc) return cli_fail(1, "balls: %s needs a value", o);
         if (!strcmp(o, "--epsilon")) {
             /* a bad value is bad input to the approximation (FL_ERR_INPUT), as in the library */
@@ -53,6 +58,14 @@ static int parse(int argc, char **argv, cli_common *c, balls_args *a)
         } else if (!strcmp(o, "--t")) {
             if (cli_parse_double(argv[++i], &a->t) || !(a->t > 0 && a->t < 1))
                 return cli_fail(1, "balls: --t takes a number in (0, 1)");
+        } else if (!strcmp(o, "--placement")) {
+            const char *v = argv[++i];
+            if (!strcmp(v, "alg1"))
+                a->placement = FL_SKIN_PLACE_ALGORITHM1;
+            else if (!strcmp(v, "subdivision"))
+                a->placement = FL_SKIN_PLACE_SUBDIVISION;
+            else
+                return cli_fail(1, "balls: --placement takes alg1 or subdivision");
         } else if (o[0] == '-' && o[1]) {
             return cli_fail(1, "balls: unknown option '%s' (see --help)", o);
         } else if (!a->mesh) {
@@ -100,6 +113,7 @@ int cmd_balls(int argc, char **argv)
     if (st == FL_OK) {
         fl_skin_approx_options opt = {0};
         opt.t = a.t;
+        opt.placement = a.placement;
         opt.progress = cli_progress_fn;
         opt.progress_user = &prog;
         st = fl_skin_approx_build(&mesh, a.epsilon, &opt, &ap, &err);

@@ -12,7 +12,8 @@
 
 static const char *usage_text =
     "usage: flintstone skin --balls BALLS [--t T] [--cell H] [-o SKIN.off] [--json] [--quiet]\n"
-    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [-o SKIN.off] [--json]\n"
+    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [--placement P] [--star B]\n"
+    "       [-o SKIN.off] [--json]\n"
     "\n"
     "Triangulates the skin surface skin^t(B) of a ball set: the boundary of the union of the\n"
     "convex combinations of the balls, each shrunk to sqrt(t) times its radius. BALLS holds one\n"
@@ -27,6 +28,9 @@ static const char *usage_text =
     "  --balls B    the ball set\n"
     "  --epsilon E  with MESH: the Hausdorff tolerance (> 0)\n"
     "  --t T        shrink factor in (0, 1), default 0.5\n"
+    "  --placement P  with MESH: alg1 (default, §4.2 Algorithm 1) or subdivision (see balls)\n"
+    "  --star B     with MESH: also write B* (\"x y z w\" lines, w the weight, negative for\n"
+    "               the orthogonal balls of alpha simplices), readable by --balls\n"
     "  --cell H     grid spacing (default: sqrt(t) times the smallest radius / 4, smaller for\n"
     "               thin necks; with MESH: 0.4 E); features thinner than H can be missed\n"
     "  -o FILE      the mesh (.off .obj .ply .stl)\n"
@@ -38,9 +42,9 @@ static const char *usage_text =
     "example: flintstone skin cube.off --epsilon 0.5 -o skin.off --json\n";
 
 typedef struct skin_args {
-    const char *balls, *mesh;
+    const char *balls, *mesh, *star;
     double t, cell, epsilon;
-    int has_epsilon;
+    int has_epsilon, placement;
 } skin_args;
 
 static int parse(int argc, char **argv, cli_common *c, skin_args *a)
@@ -51,7 +55,7 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
         if (r > 0) continue;
         const char *o = argv[i];
         int value = !strcmp(o, "--balls") || !strcmp(o, "--t") || !strcmp(o, "--cell") ||
-                    !strcmp(o, "--epsilon");
+                    !strcmp(o, "--epsilon") || !strcmp(o, "--placement") || !strcmp(o, "--star");
         if (value && i + 1 >= argc) return cli_fail(1, "skin: %s needs a value", o);
         if (!strcmp(o, "--balls")) {
             a->balls = argv[++i];
@@ -67,6 +71,16 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
                 !isfinite(a->epsilon))
                 return cli_fail(2, "skin: --epsilon takes a finite number > 0");
             a->has_epsilon = 1;
+        } else if (!strcmp(o, "--star")) {
+            a->star = argv[++i];
+        } else if (!strcmp(o, "--placement")) {
+            const char *v = argv[++i];
+            if (!strcmp(v, "alg1"))
+                a->placement = FL_SKIN_PLACE_ALGORITHM1;
+            else if (!strcmp(v, "subdivision"))
+                a->placement = FL_SKIN_PLACE_SUBDIVISION;
+            else
+                return cli_fail(1, "skin: --placement takes alg1 or subdivision");
         } else if (o[0] == '-' && o[1]) {
             return cli_fail(1, "skin: unknown option '%s' (see --help)", o);
         } else if (!a->mesh) {
@@ -103,6 +117,19 @@ static void print_summary(const cli_common *c, const fl_balls *b, const fl_mesh 
     }
 }
 
+/* B* as "x y z w" lines (the --balls format), written atomically. */
+static fl_status write_xyzw(const char *path, const fl_balls *b, fl_error *err)
+{
+    fl_out_file out;
+    fl_status st = fl_out_open(&out, path, 0, err);
+    if (st) return st;
+    for (size_t i = 0; i < b->count; i++) {
+        const double *p = b->xyzw + 4 * i;
+        fprintf(out.fp, "%.17g %.17g %.17g %.17g\n", p[0], p[1], p[2], p[3]);
+    }
+    return fl_out_commit(&out, err);
+}
+
 /* skin MESH --epsilon E: the verified skin^t(B*) of the approximation of MESH. */
 static int skin_of_mesh(const cli_common *c, const skin_args *a)
 {
@@ -118,6 +145,7 @@ static int skin_of_mesh(const cli_common *c, const skin_args *a)
         fl_skin_approx_options opt = {0};
         opt.t = a->t;
         opt.cell = a->cell;
+        opt.placement = a->placement;
         opt.progress = cli_progress_fn;
         opt.progress_user = &prog;
         st = fl_skin_approx_build(&mesh, a->epsilon, &opt, &ap, &err);
@@ -130,6 +158,7 @@ static int skin_of_mesh(const cli_common *c, const skin_args *a)
                      "of the input); try a smaller epsilon than %g",
                      ap.rounds, ap.hausdorff[1], ap.euler, ap.euler_input, a->epsilon);
     if (st == FL_OK && c->output) st = fl_write_mesh(c->output, &ap.skin, &err);
+    if (st == FL_OK && a->star) st = write_xyzw(a->star, &ap.star, &err);
     if (st == FL_OK && c->json) {
         cli_json j;
         cli_json_begin(&j, stdout);

@@ -43,10 +43,12 @@ static fl_status check_input(const fl_mesh *mesh, long long *euler, fl_error *er
 /* One construction with protecting balls of radius <= rho: B, B_perp, B*, the skin mesh and the
  * checks. */
 static fl_status round_once(const fl_mesh *mesh, skin_eps_grid *g, double eps, double rho,
-                            const fl_skin_approx_options *o, fl_skin_approx *a, fl_error *err)
+                            double cell_factor, const fl_skin_approx_options *o,
+                            fl_skin_approx *a, fl_error *err)
 {
     skin_eps_sample smp;
-    fl_status st = skin_eps_surface_balls(mesh, rho, SKIN_GAMMA, o->max_balls, &smp, err);
+    fl_status st = skin_eps_surface_balls(mesh, rho, SKIN_GAMMA, o->max_balls, o->placement, &smp,
+                                          err);
     if (st != FL_OK) return st;
     a->surface = smp.balls;
     a->boundary_balls = smp.boundary_count;
@@ -65,7 +67,7 @@ static fl_status round_once(const fl_mesh *mesh, skin_eps_grid *g, double eps, d
     /* The skin lies in the shell between the surface and the inner boundary of the union of the
      * protecting balls (Lemma 17), at most rho thick; cells of rho / 2 resolve it (measured,
      * docs/skin.md) and the checks below catch a grid that did not. */
-    so.cell = o->cell > 0 ? o->cell : 0.5 * rho;
+    so.cell = o->cell > 0 ? o->cell : cell_factor * rho;
     so.progress = o->progress;
     so.progress_user = o->progress_user;
     /* no stats: their vertex offsets cost 7 evaluations of G a vertex and the certified
@@ -105,9 +107,11 @@ fl_status fl_skin_approx_build(const fl_mesh *mesh, double epsilon,
     fl_skin_approx_options o = {0};
     if (opt) o = *opt;
     if (o.t == 0) o.t = 0.5;
-    if (!(o.t > 0 && o.t < 1) || !(o.cell >= 0) || o.max_rounds < 0 || !(o.budget_seconds >= 0))
+    if (!(o.t > 0 && o.t < 1) || !(o.cell >= 0) || o.max_rounds < 0 || !(o.budget_seconds >= 0) ||
+        (o.placement != FL_SKIN_PLACE_ALGORITHM1 && o.placement != FL_SKIN_PLACE_SUBDIVISION))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
-                       "skin: t must be in (0, 1), cell, rounds and budget >= 0");
+                       "skin: t must be in (0, 1), cell, rounds and budget >= 0, placement one "
+                       "of fl_skin_placement");
     if (!(epsilon > 0) || !isfinite(epsilon))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: epsilon must be finite and > 0");
     if (o.max_rounds == 0) o.max_rounds = 3;
@@ -120,13 +124,23 @@ fl_status fl_skin_approx_build(const fl_mesh *mesh, double epsilon,
     if (st != FL_OK) return st;
     /* Theorem 14: ∂∪B_perp ⊂ ∪B, so protecting balls of radius rho < epsilon leave room for
      * the mesher's chordal error; each failed round shrinks them. */
-    double rho = 0.8 * epsilon;
-    for (int r = 0; r < o.max_rounds; r++, rho *= 0.7) {
+    double rho = 0.8 * epsilon, cell_factor = 0.5;
+    for (int r = 0; r < o.max_rounds; r++) {
+        if (r > 0) {
+            /* A wrong Euler characteristic with the default grid has been the grid missing a
+             * neck (the tetrahedron at eps 0.2: genus 2 at cell rho/2, right at rho/5, same
+             * balls): refine the grid and keep the balls. A Hausdorff miss: smaller balls. */
+            int topology = out->euler != out->euler_input || !out->closed_manifold;
+            if (topology && o.cell == 0)
+                cell_factor *= 0.4;
+            else
+                rho *= 0.7;
+        }
         fl_skin_approx_free(out);
         out->t = o.t;
         out->euler_input = euler_input;
         out->rounds = r + 1;
-        st = round_once(mesh, &g, epsilon, rho, &o, out, err);
+        st = round_once(mesh, &g, epsilon, rho, cell_factor, &o, out, err);
         if (st != FL_OK || out->verified) break;
     }
     skin_eps_grid_free(&g);

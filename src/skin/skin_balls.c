@@ -22,21 +22,11 @@
 #include <string.h>
 
 #include "core/core.h"
-#include "skin/skin_eps.h"
+#include "skin/skin_sampler.h"
 
 enum { EDGE_DEPTH = 48, TRI_DEPTH = 30, STACK = 3 * TRI_DEPTH + 8 };
 
-typedef struct sampler {
-    const fl_mesh *m;
-    skin_eps_grid grid;
-    double rmax, gamma, reach;
-    size_t max_balls, work, max_work;
-    uint32_t *edge; /* unique edges, 2 sorted vertex ids each */
-    size_t ne;
-    uint32_t *vball;            /* ball index of each vertex */
-    size_t *edge_first;         /* balls of edge e: [edge_first[e], edge_first[e + 1]) */
-    fl_vec balls, carrier, cid; /* 4 doubles, uint8, uint32 per ball */
-} sampler;
+typedef skin_sampler sampler;
 
 static int cmp_edge(const void *pa, const void *pb)
 {
@@ -51,8 +41,8 @@ static double dist(const double *a, const double *b)
     return sqrt(d0 * d0 + d1 * d1 + d2 * d2);
 }
 
-static fl_status push(sampler *s, const double *p, double r, uint8_t kind, uint32_t id,
-                      fl_error *err)
+fl_status skin_sampler_push(sampler *s, const double *p, double r, uint8_t kind, uint32_t id,
+                            fl_error *err)
 {
     if (s->balls.count >= s->max_balls)
         return fl_fail(err, FL_ERR_INPUT, NULL, -1,
@@ -70,7 +60,7 @@ static fl_status push(sampler *s, const double *p, double r, uint8_t kind, uint3
     return FL_OK;
 }
 
-static double radius(sampler *s, const double *p, int kind, const uint32_t *ids, size_t tri)
+double skin_sampler_radius(sampler *s, const double *p, int kind, const uint32_t *ids, size_t tri)
 {
     return fmin(s->gamma * skin_eps_lgs(&s->grid, p, kind, ids, tri, s->reach), s->rmax);
 }
@@ -84,7 +74,7 @@ static int within(const double *b, const double *const *pts, int n, double f)
     return 1;
 }
 
-static fl_status tick(sampler *s, int depth, int cap, fl_error *err)
+fl_status skin_sampler_tick(sampler *s, int depth, int cap, fl_error *err)
 {
     if (++s->work > s->max_work || depth > cap)
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
@@ -109,7 +99,7 @@ static fl_status sample_edge(sampler *s, size_t e, fl_error *err)
     while (top > 0) {
         double s0 = stack[top - 1].s0, s1 = stack[top - 1].s1;
         int depth = stack[--top].depth;
-        fl_status st = tick(s, depth, EDGE_DEPTH, err);
+        fl_status st = skin_sampler_tick(s, depth, EDGE_DEPTH, err);
         if (st) return st;
         double p0[3], p1[3], mid[3];
         for (int c = 0; c < 3; c++) {
@@ -122,9 +112,9 @@ static fl_status sample_edge(sampler *s, size_t e, fl_error *err)
         if (within(bb + 4 * (size_t)s->vball[ids[0]], pts, 2, 0.9) ||
             within(bb + 4 * (size_t)s->vball[ids[1]], pts, 2, 0.9))
             continue;
-        double r = radius(s, mid, 1, ids, 0);
+        double r = skin_sampler_radius(s, mid, 1, ids, 0);
         if (0.5 * dist(p0, p1) <= 0.9 * r) {
-            if ((st = push(s, mid, r, 1, (uint32_t)e, err))) return st;
+            if ((st = skin_sampler_push(s, mid, r, 1, (uint32_t)e, err))) return st;
             continue;
         }
         double sm = 0.5 * (s0 + s1);
@@ -138,7 +128,7 @@ static fl_status sample_edge(sampler *s, size_t e, fl_error *err)
     return FL_OK;
 }
 
-static size_t edge_index(const sampler *s, uint32_t a, uint32_t b)
+size_t skin_sampler_edge_index(const sampler *s, uint32_t a, uint32_t b)
 {
     uint32_t key[2] = {a < b ? a : b, a < b ? b : a};
     const uint32_t *hit = bsearch(key, s->edge, s->ne, 2 * sizeof(uint32_t), cmp_edge);
@@ -165,7 +155,7 @@ static fl_status sample_triangle(sampler *s, size_t f, fl_vec *bl, fl_error *err
     const uint32_t *t = s->m->tri + 3 * f;
     bl->count = 0;
     for (int j = 0; j < 3; j++) {
-        size_t vb = s->vball[t[j]], e = edge_index(s, t[j], t[(j + 1) % 3]);
+        size_t vb = s->vball[t[j]], e = skin_sampler_edge_index(s, t[j], t[(j + 1) % 3]);
         if (fl_vec_push(bl, &vb, 1)) goto nomem;
         for (size_t i = s->edge_first[e]; i < s->edge_first[e + 1]; i++)
             if (fl_vec_push(bl, &i, 1)) goto nomem;
@@ -182,16 +172,16 @@ static fl_status sample_triangle(sampler *s, size_t f, fl_vec *bl, fl_error *err
         double p[3][3];
         memcpy(p, stack[top - 1].p, sizeof p);
         int depth = stack[--top].depth;
-        fl_status st = tick(s, depth, TRI_DEPTH, err);
+        fl_status st = skin_sampler_tick(s, depth, TRI_DEPTH, err);
         if (st) return st;
         const double *pts[3] = {p[0], p[1], p[2]};
         if (boundary_covers(s, bl->data, bl->count, pts)) continue;
         double c[3], far = 0;
         for (int k = 0; k < 3; k++) c[k] = (p[0][k] + p[1][k] + p[2][k]) / 3;
         for (int j = 0; j < 3; j++) far = fmax(far, dist(c, p[j]));
-        double r = radius(s, c, 2, t, f);
+        double r = skin_sampler_radius(s, c, 2, t, f);
         if (far <= 0.9 * r) {
-            if ((st = push(s, c, r, 2, (uint32_t)f, err))) return st;
+            if ((st = skin_sampler_push(s, c, r, 2, (uint32_t)f, err))) return st;
             continue;
         }
         double m[3][3]; /* m[j] = midpoint of p[j] p[j+1] */
@@ -235,7 +225,7 @@ static fl_status build_edges(sampler *s, fl_error *err)
     return FL_OK;
 }
 
-static fl_status run(sampler *s, fl_error *err)
+static fl_status run(sampler *s, int alg1, fl_error *err)
 {
     fl_status st = build_edges(s, err);
     if (!st) st = skin_eps_grid_build(s->m, s->reach, &s->grid, err);
@@ -244,16 +234,17 @@ static fl_status run(sampler *s, fl_error *err)
         uint32_t id = (uint32_t)v;
         s->vball[v] = (uint32_t)s->balls.count;
         const double *p = s->m->xyz + 3 * v;
-        st = push(s, p, radius(s, p, 0, &id, 0), 0, id, err);
+        st = skin_sampler_push(s, p, skin_sampler_radius(s, p, 0, &id, 0), 0, id, err);
     }
     for (size_t e = 0; e < s->ne && !st; e++) {
         s->edge_first[e] = s->balls.count;
-        st = sample_edge(s, e, err);
+        st = alg1 ? skin_alg1_edge(s, e, err) : sample_edge(s, e, err);
     }
     if (!st) s->edge_first[s->ne] = s->balls.count;
     fl_vec bl;
     fl_vec_init(&bl, sizeof(size_t));
-    for (size_t f = 0; f < s->m->triangle_count && !st; f++) st = sample_triangle(s, f, &bl, err);
+    for (size_t f = 0; f < s->m->triangle_count && !st; f++)
+        st = alg1 ? skin_alg1_triangle(s, f, &bl, err) : sample_triangle(s, f, &bl, err);
     fl_vec_free(&bl);
     return st;
 }
@@ -268,7 +259,7 @@ void skin_eps_sample_free(skin_eps_sample *s)
 }
 
 fl_status skin_eps_surface_balls(const fl_mesh *m, double rmax, double gamma, size_t max_balls,
-                                 skin_eps_sample *out, fl_error *err)
+                                 int placement, skin_eps_sample *out, fl_error *err)
 {
     memset(out, 0, sizeof *out);
     sampler s;
@@ -282,7 +273,7 @@ fl_status skin_eps_surface_balls(const fl_mesh *m, double rmax, double gamma, si
     fl_vec_init(&s.balls, 4 * sizeof(double));
     fl_vec_init(&s.carrier, 1);
     fl_vec_init(&s.cid, sizeof(uint32_t));
-    fl_status st = run(&s, err);
+    fl_status st = run(&s, placement == FL_SKIN_PLACE_ALGORITHM1, err);
     if (!st) {
         out->boundary_count = s.edge_first[s.ne];
         out->balls.count = s.balls.count;

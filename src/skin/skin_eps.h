@@ -39,7 +39,8 @@ double skin_eps_winding(const fl_mesh *m, const double x[3]);
  * covering it, with carrier[i] = 0/1/2 (vertex/edge/triangle) and the carrier's index in
  * carrier_id[i] (vertex index, edge index into the sorted unique edges, triangle index).
  * The arrays are malloc'ed. FL_ERR_ALGORITHM when the subdivision would exceed max_balls or
- * its depth cap. */
+ * its depth cap. placement: FL_SKIN_PLACE_ALGORITHM1 (skin_alg1.c, §4.2) or
+ * FL_SKIN_PLACE_SUBDIVISION (skin_balls.c). */
 typedef struct skin_eps_sample {
     fl_balls balls;
     uint8_t *carrier;
@@ -48,7 +49,7 @@ typedef struct skin_eps_sample {
 } skin_eps_sample;
 
 fl_status skin_eps_surface_balls(const fl_mesh *m, double rmax, double gamma, size_t max_balls,
-                                 skin_eps_sample *out, fl_error *err);
+                                 int placement, skin_eps_sample *out, fl_error *err);
 void skin_eps_sample_free(skin_eps_sample *s);
 
 /* B_perp and B* of the surface balls b (§5, §6.2) for the object bounded by m. */

@@ -323,25 +323,97 @@ static int cmp_u64(const void *pa, const void *pb)
     return a < b ? -1 : a > b;
 }
 
+/* The cube range [lo, hi] of ball b's bounding box; its cube count. */
+static double ball_cubes(const marcher *m, const double *b, uint64_t lo[3], uint64_t hi[3])
+{
+    double r = sqrt(b[3]), count = 1;
+    for (int c = 0; c < 3; c++) {
+        lo[c] = (uint64_t)floor((b[c] - r - m->origin[c]) / m->h);
+        hi[c] = (uint64_t)floor((b[c] + r - m->origin[c]) / m->h);
+        count *= (double)(hi[c] - lo[c] + 1);
+    }
+    return count;
+}
+
+enum { BITMAP_MAX_BITS = 1 << 28 };
+
+/* collect_cubes through a bitmap of the box of all positive balls (when it has at most
+ * BITMAP_MAX_BITS cubes): many overlapping balls (the eps-approximation's B*, 10^5 balls on a
+ * torus) overcount their union by 100x, which the limit must not see. -1 when the box is too
+ * large for the bitmap. */
+static int collect_bitmap(const marcher *m, const double *xyzw, size_t n, size_t max_cubes,
+                          fl_vec *cubes, fl_status *st, fl_error *err)
+{
+    uint64_t glo[3] = {UINT64_MAX, UINT64_MAX, UINT64_MAX}, ghi[3] = {0, 0, 0}, lo[3], hi[3];
+    for (size_t i = 0; i < n; i++) {
+        if (!(xyzw[4 * i + 3] > 0)) continue;
+        ball_cubes(m, xyzw + 4 * i, lo, hi);
+        for (int c = 0; c < 3; c++) {
+            glo[c] = lo[c] < glo[c] ? lo[c] : glo[c];
+            ghi[c] = hi[c] > ghi[c] ? hi[c] : ghi[c];
+        }
+    }
+    if (glo[0] > ghi[0]) return 0; /* no positive ball: caller's loop finds no cube either */
+    double cells = 1;
+    uint64_t d[3];
+    for (int c = 0; c < 3; c++) {
+        d[c] = ghi[c] - glo[c] + 1;
+        cells *= (double)d[c];
+    }
+    if (cells > BITMAP_MAX_BITS) return -1;
+    uint8_t *bits = calloc((size_t)cells / 8 + 1, 1);
+    if (!bits) return -1;
+    size_t unique = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!(xyzw[4 * i + 3] > 0)) continue;
+        ball_cubes(m, xyzw + 4 * i, lo, hi);
+        for (uint64_t z = lo[2]; z <= hi[2]; z++)
+            for (uint64_t y = lo[1]; y <= hi[1]; y++)
+                for (uint64_t x = lo[0]; x <= hi[0]; x++) {
+                    size_t id =
+                        (size_t)(((z - glo[2]) * d[1] + (y - glo[1])) * d[0] + (x - glo[0]));
+                    unique += !(bits[id >> 3] & (1u << (id & 7)));
+                    bits[id >> 3] |= (uint8_t)(1u << (id & 7));
+                }
+    }
+    *st = FL_OK;
+    if (unique > max_cubes)
+        *st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                      "skin: the grid would visit %zu cubes (more than %zu); choose a larger "
+                      "cell than %g",
+                      unique, max_cubes, m->h);
+    /* z-major scan: the keys come out sorted (pack puts z in the high bits) */
+    for (uint64_t z = 0; z < d[2] && !*st; z++)
+        for (uint64_t y = 0; y < d[1] && !*st; y++)
+            for (uint64_t x = 0; x < d[0]; x++) {
+                size_t id = (size_t)((z * d[1] + y) * d[0] + x);
+                if (!(bits[id >> 3] & (1u << (id & 7)))) continue;
+                uint64_t p[3] = {x + glo[0], y + glo[1], z + glo[2]};
+                uint64_t key = pack(p);
+                if (fl_vec_push(cubes, &key, 1)) {
+                    *st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+                    break;
+                }
+            }
+    free(bits);
+    return 0;
+}
+
 /* The cubes meeting some positive ball's bounding box, sorted and unique (keys of their lowest
- * corner). Fails with FL_ERR_INPUT when the boxes hold more than max_cubes cubes in total. */
+ * corner). Fails with FL_ERR_INPUT when they are more than max_cubes (without the bitmap: when
+ * the boxes hold more than max_cubes cubes in total). */
 static fl_status collect_cubes(const marcher *m, const double *xyzw, size_t n, size_t max_cubes,
                                fl_vec *cubes, fl_error *err)
 {
+    fl_status bst = FL_OK;
+    if (collect_bitmap(m, xyzw, n, max_cubes, cubes, &bst, err) == 0) return bst;
     for (int pass = 0; pass < 2; pass++) {
         double total = 0;
         for (size_t i = 0; i < n; i++) {
             const double *b = xyzw + 4 * i;
             if (!(b[3] > 0)) continue;
-            double r = sqrt(b[3]);
             uint64_t lo[3], hi[3];
-            double count = 1;
-            for (int c = 0; c < 3; c++) {
-                lo[c] = (uint64_t)floor((b[c] - r - m->origin[c]) / m->h);
-                hi[c] = (uint64_t)floor((b[c] + r - m->origin[c]) / m->h);
-                count *= (double)(hi[c] - lo[c] + 1);
-            }
-            total += count;
+            total += ball_cubes(m, b, lo, hi);
             if (pass == 0) continue;
             uint64_t p[3];
             for (p[2] = lo[2]; p[2] <= hi[2]; p[2]++)

@@ -162,13 +162,85 @@ static int orthogonal_to_tet(const double *xyzw, const uint32_t *t, const double
     return 1;
 }
 
+/* The ball o orthogonal to the four balls of tetrahedron t, solved in long double relative to
+ * the first centre (2 (z_j - z_0).y = |z_j - z_0|^2 - w_j + w_0, y = centre - z_0) by Gaussian
+ * elimination with partial pivoting. fl_rt3's ortho (Cramer in doubles on absolute
+ * coordinates) was off by up to 0.1 in power on near-flat slivers of symmetric ball sets (the
+ * octahedron's Algorithm-1 balls: B_perp balls containing protecting-ball centres). 0 when the
+ * system is ill-conditioned (|det| <= 1e-12 of the product of its row lengths): the sliver's
+ * orthocentre is then decided by rounding, and as argued at orthogonal_to_tet dropping it
+ * loses nothing the verification would not catch. */
+static int ortho_ball(const double *xyzw, const uint32_t *t, double o[4])
+{
+    typedef long double ld;
+    const double *z0 = xyzw + 4 * (size_t)t[0];
+    ld a[3][4], prod = 1;
+    for (int j = 0; j < 3; j++) {
+        const double *z = xyzw + 4 * (size_t)t[j + 1];
+        ld n2 = 0;
+        for (int c = 0; c < 3; c++) {
+            a[j][c] = 2 * ((ld)z[c] - z0[c]);
+            n2 += a[j][c] * a[j][c];
+        }
+        a[j][3] = n2 / 4 - (ld)z[3] + z0[3];
+        prod *= sqrtl(n2);
+    }
+    ld det = 1;
+    for (int c = 0; c < 3; c++) {
+        int piv = c;
+        for (int r = c + 1; r < 3; r++)
+            if (fabsl(a[r][c]) > fabsl(a[piv][c])) piv = r;
+        if (piv != c)
+            for (int k = 0; k < 4; k++) {
+                ld x = a[c][k];
+                a[c][k] = a[piv][k];
+                a[piv][k] = x;
+            }
+        det *= a[c][c];
+        if (!(fabsl(det) > 1e-12L * prod) || !isfinite((double)det)) return 0;
+        for (int r = c + 1; r < 3; r++) {
+            ld f = a[r][c] / a[c][c];
+            for (int k = c; k < 4; k++) a[r][k] -= f * a[c][k];
+        }
+    }
+    ld y[3];
+    for (int c = 2; c >= 0; c--) {
+        ld v = a[c][3];
+        for (int k = c + 1; k < 3; k++) v -= a[c][k] * y[k];
+        y[c] = v / a[c][c];
+    }
+    ld d2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+    for (int c = 0; c < 3; c++) o[c] = (double)(z0[c] + y[c]);
+    o[3] = (double)(d2 - z0[3]);
+    return isfinite(o[0] + o[1] + o[2] + o[3]);
+}
+
+/* 1 when o has power >= 0 (to rounding) to the far vertex of each neighbour of tetrahedron i:
+ * with the exact regular triangulation every tetrahedron is locally regular, so a computed
+ * orthogonal ball closer than orthogonal to a neighbour's ball is a wrong one. */
+static int locally_empty(const double *xyzw, const fl_rt3 *rt, size_t i, const double *o)
+{
+    const uint32_t *t = rt->tet + 4 * i;
+    for (int k = 0; k < 4; k++) {
+        uint32_t n = rt->adj[4 * i + k];
+        if (n >= rt->tet_count) continue;
+        for (int j = 0; j < 4; j++) {
+            uint32_t v = rt->tet[4 * (size_t)n + j];
+            if (v == t[0] || v == t[1] || v == t[2] || v == t[3]) continue;
+            const double *z = xyzw + 4 * (size_t)v;
+            double d2 = (o[0] - z[0]) * (o[0] - z[0]) + (o[1] - z[1]) * (o[1] - z[1]) +
+                        (o[2] - z[2]) * (o[2] - z[2]);
+            if (!(d2 - z[3] - o[3] >= -1e-9 * (d2 + fabs(z[3]) + fabs(o[3])))) return 0;
+        }
+    }
+    return 1;
+}
+
 fl_status skin_eps_orthogonal_balls(skin_eps_grid *g, const fl_balls *b, fl_balls *perp,
                                     fl_balls *star, fl_error *err)
 {
     fl_rt3 rt = {0};
-    fl_rt3_options ro = {0};
-    ro.want_ortho = 1;
-    fl_status st = fl_rt3_build(b->xyzw, b->count, &ro, &rt, err);
+    fl_status st = fl_rt3_build(b->xyzw, b->count, NULL, &rt, err);
     if (st != FL_OK) return st;
     fl_vec vp, vs;
     fl_vec_init(&vp, 4 * sizeof(double));
@@ -176,9 +248,10 @@ fl_status skin_eps_orthogonal_balls(skin_eps_grid *g, const fl_balls *b, fl_ball
     double scale = 0;
     for (size_t i = 0; i < b->count; i++) scale = fmax(scale, b->xyzw[4 * i + 3]);
     for (size_t i = 0; i < rt.tet_count && st == FL_OK; i++) {
-        const double *o = rt.ortho + 4 * i;
-        if (!(o[3] > 0) || !isfinite(o[0] + o[1] + o[2] + o[3])) continue;
+        double o[4];
+        if (!ortho_ball(b->xyzw, rt.tet + 4 * i, o) || !(o[3] > 0)) continue;
         if (!orthogonal_to_tet(b->xyzw, rt.tet + 4 * i, o)) continue;
+        if (!locally_empty(b->xyzw, &rt, i, o)) continue;
         if (skin_eps_inside(g, o) && fl_vec_push(&vp, o, 1))
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory (B_perp)");
     }

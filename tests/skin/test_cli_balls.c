@@ -67,8 +67,23 @@ static void test_cli_skin_mesh_epsilon_writes_verified_sphere(void)
 {
     cli_write_file("cli_skin_cube.off", cube_off);
     cli_result r;
-    CHECK_EQ_INT(cli_run(&r, "skin cli_skin_cube.off --epsilon 0.5 -o cli_skin.off --json"), 0);
+    CHECK_EQ_INT(cli_run(&r, "skin cli_skin_cube.off --epsilon 0.5 -o cli_skin.off --star "
+                             "cli_star.xyzw --json"),
+                 0);
     double eps = 0.5, h = json_number(r.out, "hausdorff_upper");
+    /* --star: B*, one "x y z w" line a ball, with negative weights (the alpha simplices' balls) */
+    FILE *f = fopen("cli_star.xyzw", "r");
+    CHECK(f != NULL);
+    size_t lines = 0, negative = 0;
+    double b[4];
+    while (f && fscanf(f, "%lf %lf %lf %lf", b, b + 1, b + 2, b + 3) == 4) {
+        lines++;
+        negative += b[3] < 0;
+    }
+    if (f) fclose(f);
+    CHECK_MSG((double)lines == json_number(r.out, "balls") && negative > 0 && negative < lines,
+              "%zu lines, %zu negative, %s", lines, negative, r.out);
+    remove("cli_star.xyzw");
     CHECK_MSG(json_number(r.out, "euler") == 2 && json_number(r.out, "euler_input") == 2, "%s",
               r.out);
     CHECK_MSG(h > 0 && h <= eps && json_number(r.out, "balls") > 0, "%s", r.out);
@@ -107,6 +122,9 @@ static void test_cli_balls_rejects_open_mesh_and_bad_epsilon(void)
     CHECK_EQ_INT(cli_run(&r, "balls cli_balls_ok.off --epsilon 0"), 2);
     CHECK_EQ_INT(cli_run(&r, "balls cli_balls_ok.off --epsilon nan"), 2);
     CHECK_EQ_INT(cli_run(&r, "skin cli_balls_ok.off --epsilon -1"), 2);
+    CHECK_EQ_INT(cli_run(&r, "balls cli_balls_ok.off --epsilon 0.5 --placement voronoi"), 1);
+    CHECK_MSG(strstr(r.err, "alg1 or subdivision") != NULL, "%s", r.err);
+    CHECK_EQ_INT(cli_run(&r, "skin cli_balls_ok.off --epsilon 0.5 --placement"), 1);
     CHECK_EQ_INT(cli_run(&r, "balls cli_balls_ok.off"), 1);
     CHECK_EQ_INT(cli_run(&r, "skin cli_balls_ok.off"), 1);
     CHECK_EQ_INT(cli_run(&r, "balls --help"), 0);

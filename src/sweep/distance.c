@@ -113,12 +113,22 @@ double fl_sweep_triangle_closest(const double *p, const double *a, const double 
      * whose lower bound d - eps exceeded the answer; tests/degenerate/test_sweep_degenerate.c). */
     double cx = ab[1] * ac[2] - ab[2] * ac[1], cy = ab[2] * ac[0] - ab[0] * ac[2];
     double cz = ab[0] * ac[1] - ab[1] * ac[0], cross2 = cx * cx + cy * cy + cz * cz;
+    /* Relative to the LONGEST edge: a needle with one edge of 1e-15 against two of 14 passed
+     * the per-angle test at a (the angle there is not small) but its va, vb, vc are rounding
+     * noise, and the face solve returned the distance to a corner, 13.2 instead of 0, for a
+     * query on the long edges (found by fuzz/fuzz_sweep.c as a bounding triangle with two
+     * equal corners up to rounding). Area^2 <= 1e-24 L^4 puts every face point within 1e-12 L
+     * of the longest edge, the same tolerance as before. */
+    double bc2 = 0;
+    for (int i = 0; i < 3; i++) bc2 += (ac[i] - ab[i]) * (ac[i] - ab[i]);
+    double l2 = fmax(fmax(ab2, ac2), bc2);
     /* Outside the face's prism (some barycentric of the projection is negative) the nearest
      * point is on the boundary. A degenerate triangle (sin of its angle at a below 1e-12) also
      * goes there: its face solve would divide by (nearly) zero, and its face lies within
      * 1e-12 |ab| of its edges. Between that and well-shaped triangles the face solve loses
      * accuracy like 1/sin^2 (docs/sweep.md). */
-    if (!(cross2 > 1e-24 * ab2 * ac2) || !(denom > 0) || va < 0 || vb < 0 || vc < 0)
+    if (!(cross2 > 1e-24 * ab2 * ac2) || !(cross2 > 1e-24 * l2 * l2) || !(denom > 0) || va < 0 ||
+        vb < 0 || vc < 0)
         return triangle_edges_closest(p, v, bary, closest);
     double s = vb / denom, t = vc / denom;
     set_bary(bary, 1 - s - t, s, t);

@@ -266,7 +266,38 @@ static void test_nearly_collinear_triangle_distance_is_the_edge_distance(void)
     fl_mesh_free(&m);
 }
 
+/* A needle: two corners one ulp apart, the third 14 away, and a query on the long edges. The
+ * angle at a is not small, so the per-angle degeneracy test let it through to the face solve,
+ * whose barycentrics were rounding noise: distance 13.2 (the corner) instead of ~0. Found by
+ * fuzz_sweep as a node's bounding triangle, where it pruned the answer (a 12-triangle mesh
+ * of repeated points and one segment, replayed below). */
+static void test_needle_triangle_distance_is_the_long_edge_distance(void)
+{
+    const double a[3] = {-8, -8, -8}, b[3] = {-8 + 0x1p-49, -8, -8 - 0x1p-49};
+    const double c[3] = {3.988e-16, 3.988e-16, 5.347e-16}, p[3] = {-0.375, -0.375, -0.375};
+    double bary[3], cl[3];
+    double d = sqrt(fl_sweep_triangle_closest(p, a, b, c, bary, cl));
+    double o = (double)oracle_triangle(p, a, b, c);
+    CHECK_MSG(fabs(d - o) <= 1e-12 * 14, "needle: %.17g, oracle %.17g", d, o);
+    double v[27] = {-6, 2e-300, -7.75, -7.75, -8, -8, -8, -8, -8, -8, -5.5, -8, -8, -8,
+                    -8, -8, -8, -8, -8, -7.25, 2e-300, 2e-300, 2e-150, 2e-300, 2e-300, -1.25,
+                    -1.625};
+    uint32_t tri[36];
+    for (int i = 0; i < 36; i++) tri[i] = 7;
+    tri[0] = 4;
+    fl_mesh m = {9, v, 12, tri};
+    fl_sweep *s;
+    fl_error err;
+    fl_closest r;
+    CHECK_STATUS(fl_sweep_build(&m, NULL, &s, &err), FL_OK, &err);
+    CHECK_STATUS(fl_sweep_closest(s, p, 1, 0, &r, &err), FL_OK, &err);
+    CHECK_MSG(r.distance <= 1e-12, "mesh query: %.17g (the segment passes through the query)",
+              r.distance);
+    fl_sweep_free(s);
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_nearly_collinear_triangle_distance_is_the_edge_distance),
+             FL_TEST_CASE(test_needle_triangle_distance_is_the_long_edge_distance),
              FL_TEST_CASE(test_parallel_squares_are_at_their_offset),
              FL_TEST_CASE(test_shifted_squares_reach_the_corner_distance),
              FL_TEST_CASE(test_mesh_against_itself_is_zero),

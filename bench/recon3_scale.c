@@ -12,6 +12,7 @@
  *   RESULT n=N dt=SECONDS rec=SECONDS ratio=R on_boundary=B/U closed=.. manifold=.. genus=..
  *          flips=F augmented_c0=C
  *
+ * (plus dt_cpu, rec_cpu, cpu_ratio: the same in process CPU time, steadier on a loaded machine)
  * with median wall-clock seconds and the reconstruction checked by fl_mesh_check (no
  * self-intersection search: O(T log T) it would dominate). OUT.xyz, when given, receives the
  * points (%.17g) so that a peer can reconstruct exactly the same input. */
@@ -24,11 +25,21 @@
 
 #include "flintstone.h"
 
-static double now(void)
+static double clock_s(clockid_t id)
 {
     struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
+    clock_gettime(id, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static double now(void)
+{
+    return clock_s(CLOCK_MONOTONIC);
+}
+
+static double cpu(void)
+{
+    return clock_s(CLOCK_PROCESS_CPUTIME_ID);
 }
 
 static uint64_t splitmix64(uint64_t *s)
@@ -80,33 +91,38 @@ int main(int argc, char **argv)
             fprintf(f, "%.17g %.17g %.17g\n", xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
         if (fclose(f) != 0) return fprintf(stderr, "recon3_scale: write failed\n"), 3;
     }
-    double dt_s[3], rec_s[3];
+    double dt_s[3], rec_s[3], dt_c[3], rec_c[3];
     fl_reconstruction3 rec = {0};
     fl_error err;
     for (int round = 0; round < 3; round++) {
         fl_dt3 dt;
-        double t0 = now();
+        double t0 = now(), c0 = cpu();
         if (fl_dt3_build(xyz, n, NULL, &dt, &err) != FL_OK)
             return fprintf(stderr, "fl_dt3_build: %s\n", err.message), 1;
         dt_s[round] = now() - t0;
+        dt_c[round] = cpu() - c0;
         fl_dt3_free(&dt);
         fl_reconstruction3_free(&rec);
-        t0 = now();
+        t0 = now(), c0 = cpu();
         if (fl_reconstruct3(xyz, n, NULL, &rec, &err) != FL_OK)
             return fprintf(stderr, "fl_reconstruct3: %s\n", err.message), 1;
         rec_s[round] = now() - t0;
+        rec_c[round] = cpu() - c0;
     }
     qsort(dt_s, 3, sizeof *dt_s, cmp_double);
     qsort(rec_s, 3, sizeof *rec_s, cmp_double);
+    qsort(dt_c, 3, sizeof *dt_c, cmp_double);
+    qsort(rec_c, 3, sizeof *rec_c, cmp_double);
     fl_mesh m = {.vertex_count = n, .xyz = xyz, .triangle_count = rec.triangle_count,
                  .tri = rec.tri};
     fl_mesh_check_options o = {.skip_self_intersections = 1};
     fl_mesh_report r;
     if (fl_mesh_check(&m, &o, &r, &err) != FL_OK)
         return fprintf(stderr, "fl_mesh_check: %s\n", err.message), 1;
-    printf("RESULT n=%zu dt=%.3f rec=%.3f ratio=%.2f on_boundary=%zu/%zu closed=%d manifold=%d "
-           "genus=%lld flips=%zu augmented_c0=%g\n",
-           n, dt_s[1], rec_s[1], rec_s[1] / dt_s[1], rec.boundary_vertex_count, rec.unique_count,
+    printf("RESULT n=%zu dt=%.3f rec=%.3f ratio=%.2f dt_cpu=%.3f rec_cpu=%.3f cpu_ratio=%.2f "
+           "on_boundary=%zu/%zu closed=%d manifold=%d genus=%lld flips=%zu augmented_c0=%g\n",
+           n, dt_s[1], rec_s[1], rec_s[1] / dt_s[1], dt_c[1], rec_c[1], rec_c[1] / dt_c[1],
+           rec.boundary_vertex_count, rec.unique_count,
            r.closed, r.manifold, r.genus, rec.flip_count, rec.augmented_c0);
     fl_mesh_report_free(&r);
     fl_reconstruction3_free(&rec);

@@ -21,7 +21,7 @@ for n in $sizes; do
     { echo "ERROR|reconstruct3_scale_$label|recon3_scale failed"; continue; }
   rec=$(field rec "$line"); dt=$(field dt "$line")
   notes="on boundary $(field on_boundary "$line"), closed $(field closed "$line"), manifold $(field manifold "$line"), genus $(field genus "$line"), flips $(field flips "$line"), augmented_c0 $(field augmented_c0 "$line")"
-  echo "ROW|reconstruct3_scale_${label}_vs_dt|$rec|our own fl_dt3_build (target ratio <= 3)|$dt|-|$notes"
+  echo "ROW|reconstruct3_scale_${label}_vs_dt|$rec|our own fl_dt3_build (target ratio <= 3)|$dt|$(field cpu_ratio "$line")|$notes"
   if ((n <= cgal_max)) && [ -x "$BENCH_BIN/cgal_afront" ]; then
     cg=$("$BENCH_BIN/cgal_afront" "$pts" "$BENCH_DATA/blob_$n.cgal.off")
     cc=$("$fl" check "$BENCH_DATA/blob_$n.cgal.off" --json --no-self-intersections 2>/dev/null || true)

@@ -125,8 +125,14 @@ static int lens_empty(const graph_grid *g, const gamma_frame *f, const uint32_t 
     int dim = g->dim;
     double lo[3], hi[3], reach = f->r * (1 + 1e-6);
     for (int k = 0; k < dim; k++) lo[k] = f->center[k] - reach, hi[k] = f->center[k] + reach;
+    /* d2 >= 0, so a point in the lens has |h| < r^2 / (2T): only cells meeting that slab (with
+     * a margin for the rounding of h) can hold one */
+    double mag = 0; /* the cells' corners round at the scale of the coordinates */
+    for (int k = 0; k < dim; k++)
+        mag = fmax(mag, fabs(f->center[k]) + fabs(g->lo[k]) + (double)g->res[k] * g->cell);
+    double half = f->r * f->r * (1 + 1e-9) / (2 * t) * (1 + 1e-6) + 1e-12 * (reach + mag);
     box->count = 0;
-    if (graph_grid_box(g, lo, hi, box) < 0) return -1;
+    if (graph_grid_slab(g, lo, hi, f->center, f->normal, half, box) < 0) return -1;
     const uint32_t *items = box->data;
     double r2 = f->r * f->r * (1 + 1e-9);
     for (size_t i = 0; i < box->count; i++) {

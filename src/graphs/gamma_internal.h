@@ -158,6 +158,11 @@ void graph_grid_free(graph_grid *g);
 /* Appends to out (uint32_t) every point of the cells meeting the box [lo,hi]: a superset of the
  * points in the box. Returns -1 on allocation failure. */
 int graph_grid_box(const graph_grid *g, const double *lo, const double *hi, fl_vec *out);
+/* Like graph_grid_box, but only the cells that may meet the slab |normal.(x - center)| <= half
+ * (unit normal): a superset of the box's points in the slab, for thin regions such as a γ-lens.
+ * Returns -1 on allocation failure. */
+int graph_grid_slab(const graph_grid *g, const double *lo, const double *hi, const double *center,
+                    const double *normal, double half, fl_vec *out);
 /* Appends the points of the cells at Chebyshev cell distance exactly `ring` from the cell of p;
  * every point at Euclidean distance < ring * cell from p lies in rings 0..ring. Returns the
  * number appended, or -1 on allocation failure; 0 with *beyond set once the ring leaves the grid.

@@ -123,6 +123,31 @@ int graph_grid_box(const graph_grid *g, const double *lo, const double *hi, fl_v
     return 0;
 }
 
+int graph_grid_slab(const graph_grid *g, const double *lo, const double *hi, const double *center,
+                    const double *normal, double half, fl_vec *out)
+{
+    size_t a0[3] = {0, 0, 0}, a1[3] = {0, 0, 0}, c[3];
+    double ext[3] = {0, 0, 0}, reach = 0; /* a cell's half-extent; its reach along the normal */
+    for (int a = 0; a < g->dim; a++) {
+        a0[a] = cell_coord(g, a, lo[a]);
+        a1[a] = cell_coord(g, a, hi[a]);
+        /* one cell along an axis may hold points beyond its nominal width (see grid_shape) */
+        ext[a] = g->res[a] > 1 ? g->cell / 2 : INFINITY;
+        reach += ext[a] * fabs(normal[a]);
+    }
+    if (!(reach < INFINITY)) return graph_grid_box(g, lo, hi, out);
+    for (c[2] = a0[2]; c[2] <= a1[2]; c[2]++)
+        for (c[1] = a0[1]; c[1] <= a1[1]; c[1]++)
+            for (c[0] = a0[0]; c[0] <= a1[0]; c[0]++) {
+                double h = 0;
+                for (int a = 0; a < g->dim; a++)
+                    h += (g->lo[a] + ((double)c[a] + 0.5) * g->cell - center[a]) * normal[a];
+                if (!(fabs(h) <= half + reach * (1 + 1e-9))) continue;
+                if (push_cell(g, c, out)) return -1;
+            }
+    return 0;
+}
+
 long graph_grid_ring(const graph_grid *g, const double *p, size_t ring, fl_vec *out, int *beyond)
 {
     size_t before = out->count, home[3] = {0, 0, 0};

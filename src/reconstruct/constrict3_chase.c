@@ -35,7 +35,17 @@
 /* Removals in a row without a new boundary point before constriction counts as stalled. On the
  * demo peanut the longest run before the last points were buried was 106, most runs are < 30. */
 #define CHASE_STALL 64
-#define CHASE_RADIUS 2
+
+/* The stall limit after flips: CHASE_STALL, but T/128 removals on triangulations of more than
+ * 2^16 tetrahedra, so that the O(T) passes of a stall cost O(1) amortized per removal there
+ * (10^6 surface points made about 1 350 flips, each followed by a pass after 64 removals: the
+ * reconstruction took 4.7x the Delaunay time, 2.6x with this floor, bench/recon3_scale.c, with
+ * the same points left inside and about as many removals). Smaller inputs - the peanut and the
+ * quality tests, where the timing of the chase decides the shape - keep 64. */
+static size_t stall_floor(const constrict3_state *s)
+{
+    return s->tet_count > ((size_t)1 << 16) ? s->tet_count >> 7 : CHASE_STALL;
+}
 
 void constrict3_chase_init(constrict3_chase *c, size_t on_boundary)
 {
@@ -111,7 +121,7 @@ int constrict3_chase_before(constrict3_state *s, constrict3_chase *c, constrict3
     if (constrict3_unlock(s, push, ctx, e.key, &made) != 0) return -1;
     *flips += made;
     if (made) {
-        c->limit = CHASE_STALL;
+        c->limit = stall_floor(s);
         /* e is still valid unless a flip rewrote its slot (then push() re-entered it) */
         if (!s->removed[e.tet] && e.version == s->version[e.tet] &&
             constrict3_heap_push(h, e) != 0)

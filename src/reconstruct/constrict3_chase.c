@@ -35,11 +35,12 @@
 /* Removals in a row without a new boundary point before constriction counts as stalled. On the
  * demo peanut the longest run before the last points were buried was 106, most runs are < 30. */
 #define CHASE_STALL 64
+#define CHASE_RADIUS 2
 
 /* The stall limit after flips: CHASE_STALL, but T/128 removals on triangulations of more than
  * 2^16 tetrahedra, so that the O(T) passes of a stall cost O(1) amortized per removal there
  * (10^6 surface points made about 1 350 flips, each followed by a pass after 64 removals: the
- * reconstruction took 4.7x the Delaunay time, 2.6x with this floor, bench/recon3_scale.c, with
+ * reconstruction took 4.7x the Delaunay time, 2.85x with this floor, bench/recon3_scale.c, with
  * the same points left inside and about as many removals). Smaller inputs - the peanut and the
  * quality tests, where the timing of the chase decides the shape - keep 64. */
 static size_t stall_floor(const constrict3_state *s)

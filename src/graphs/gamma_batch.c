@@ -72,13 +72,10 @@ static int simplex_params(const graph_grid *g, const uint32_t *simplex, fl_vec *
     return 1;
 }
 
-fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
-                                    const uint32_t *simplices, size_t count, double *c0,
-                                    double *c1, int *found, fl_error *err)
+/* The points (finite, distinct) and every simplex (indices in range, no repeats). */
+static fl_status check_input(const double *coords, size_t n, int dim, const uint32_t *simplices,
+                             size_t count, fl_error *err)
 {
-    if (count && (!simplices || !c0 || !c1))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1,
-                       "fl_gamma_simplices_params: simplices, c0 and c1 must not be NULL");
     fl_status st = graph_check_points(coords, n, dim, err);
     if (st != FL_OK) return st;
     for (size_t i = 0; i < count; i++) {
@@ -94,7 +91,18 @@ fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
                                    "simplex %zu repeats vertex %u", i, (unsigned)s[a]);
         }
     }
-    if (count == 0) return FL_OK;
+    return FL_OK;
+}
+
+fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
+                                    const uint32_t *simplices, size_t count, double *c0,
+                                    double *c1, int *found, fl_error *err)
+{
+    if (count && (!simplices || !c0 || !c1))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1,
+                       "fl_gamma_simplices_params: simplices, c0 and c1 must not be NULL");
+    fl_status st = check_input(coords, n, dim, simplices, count, err);
+    if (st != FL_OK || count == 0) return st;
     graph_grid g;
     st = graph_grid_build(&g, coords, n, dim, err);
     if (st != FL_OK) return st;
@@ -162,19 +170,8 @@ fl_status fl_gamma_simplices_min_c1(const double *coords, size_t n, int dim,
     *min_c1 = NAN;
     if (argmin) *argmin = count;
     double c0 = NAN, c1 = NAN;
-    fl_status st = fl_gamma_simplices_params(coords, n, dim, simplices, 0, &c0, &c1, NULL, err);
-    if (st != FL_OK) return st; /* the point checks */
-    for (size_t i = 0; i < count; i++) {
-        const uint32_t *s = simplices + (size_t)dim * i;
-        for (int a = 0; a < dim; a++) {
-            int bad = s[a] >= n;
-            for (int b = 0; b < a; b++) bad |= s[a] == s[b];
-            if (bad)
-                return fl_fail(err, FL_ERR_INPUT, NULL, -1,
-                               "simplex %zu: index out of range or repeated vertex", i);
-        }
-    }
-    if (count == 0) return FL_OK;
+    fl_status st = check_input(coords, n, dim, simplices, count, err);
+    if (st != FL_OK || count == 0) return st;
     graph_grid g;
     st = graph_grid_build(&g, coords, n, dim, err);
     if (st != FL_OK) return st;

@@ -188,16 +188,21 @@ static int oracle_focus(const double *xyzw, const uint32_t *v, int k, ld f[3], l
     return 0;
 }
 
-/* Euler characteristic of the union of the n balls (n >= 4 centres in general position);
- * sets *ok = 0 when the regular triangulation cannot be built. */
-static long long euler_union_oracle(const double *xyzw, size_t n, int *ok)
+/* Every simplex (vertex, edge, triangle, tetrahedron) of the regular triangulation of the n
+ * balls, sorted by oracle_cmp without repeats, in a calloc'ed array of *count; NULL when the
+ * triangulation cannot be built or memory runs out. */
+static oracle_simplex *oracle_rt_simplices(const double *xyzw, size_t n, size_t *count)
 {
     fl_rt3 rt;
     fl_error err;
-    *ok = 0;
-    if (fl_rt3_build(xyzw, n, NULL, &rt, &err) != FL_OK) return 0;
+    *count = 0;
+    if (fl_rt3_build(xyzw, n, NULL, &rt, &err) != FL_OK) return NULL;
     size_t m = rt.tet_count * 15, u = 0;
-    oracle_simplex *s = calloc(m, sizeof *s);
+    oracle_simplex *s = calloc(m ? m : 1, sizeof *s);
+    if (!s) {
+        fl_rt3_free(&rt);
+        return NULL;
+    }
     for (size_t t = 0; t < rt.tet_count; t++)
         for (uint32_t mask = 1; mask < 16; mask++) {
             oracle_simplex *x = &s[u++];
@@ -219,6 +224,18 @@ static long long euler_union_oracle(const double *xyzw, size_t n, int *ok)
     u = 0;
     for (size_t i = 0; i < m; i++)
         if (u == 0 || oracle_cmp(&s[i], &s[u - 1])) s[u++] = s[i];
+    *count = u;
+    return s;
+}
+
+/* Euler characteristic of the union of the n balls (n >= 4 centres in general position);
+ * sets *ok = 0 when the regular triangulation cannot be built. */
+static long long euler_union_oracle(const double *xyzw, size_t n, int *ok)
+{
+    size_t u;
+    *ok = 0;
+    oracle_simplex *s = oracle_rt_simplices(xyzw, n, &u);
+    if (!s) return 0;
     /* from tetrahedra down to vertices: cofaces are decided before their faces */
     long long chi = 0;
     for (int k = 3; k >= 0; k--)

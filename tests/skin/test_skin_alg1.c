@@ -248,33 +248,10 @@ static ld power_ld(const double *b, const ld *f)
  * checks of P1/P2 on the alpha simplices (alpha < 0). Returns the number of violations. */
 static size_t check_alpha_complex(const fl_mesh *m, const fl_balls *b, const char *name)
 {
-    fl_rt3 rt;
-    fl_error err;
-    CHECK_STATUS(fl_rt3_build(b->xyzw, b->count, NULL, &rt, &err), FL_OK, &err);
-    size_t ns = rt.tet_count * 15, u = 0, bad = 0;
-    oracle_simplex *s = calloc(ns, sizeof *s);
-    for (size_t t = 0; t < rt.tet_count; t++)
-        for (uint32_t mask = 1; mask < 16; mask++) {
-            oracle_simplex *x = &s[u++];
-            int k = 0;
-            for (int i = 0; i < 4; i++)
-                if (mask >> i & 1) x->v[k++] = rt.tet[4 * t + i];
-            for (int i = 1; i < k; i++)
-                for (int j = i; j > 0 && x->v[j - 1] > x->v[j]; j--) {
-                    uint32_t tmp = x->v[j];
-                    x->v[j] = x->v[j - 1];
-                    x->v[j - 1] = tmp;
-                }
-            x->k = k - 1;
-            for (int i = k; i < 4; i++)
-                x->v[i] = UINT32_MAX;
-        }
-    fl_rt3_free(&rt);
-    qsort(s, ns, sizeof *s, oracle_cmp);
-    u = 0;
-    for (size_t i = 0; i < ns; i++)
-        if (u == 0 || oracle_cmp(&s[i], &s[u - 1])) s[u++] = s[i];
-    ns = u;
+    size_t ns = 0, bad = 0;
+    oracle_simplex *s = oracle_rt_simplices(b->xyzw, b->count, &ns);
+    CHECK(s != NULL);
+    if (!s) return 1;
     for (size_t i = 0; i < ns; i++)
         s[i].alpha = HUGE_VALL;
     double *area = calloc(m->triangle_count, sizeof(double));

@@ -40,6 +40,8 @@ double cli_now(void);
 /* Parses a double / a non-negative integer option value; returns 0 on success. */
 int cli_parse_double(const char *s, double *out);
 int cli_parse_size(const char *s, size_t *out);
+/* Parses the --placement value of `balls` and `skin` (alg1 | subdivision); 0 on success. */
+int cli_parse_skin_placement(const char *s, fl_skin_placement *out);
 
 /* Progress reporting: an fl_progress_fn that draws a bar on stderr when it is a terminal and
  * quiet is off. `user` must point to a cli_progress. */

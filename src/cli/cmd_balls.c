@@ -37,7 +37,8 @@ static const char *usage_text =
 typedef struct balls_args {
     const char *mesh;
     double epsilon, t;
-    int has_epsilon, placement;
+    int has_epsilon;
+    fl_skin_placement placement;
 } balls_args;
 
 static int parse(int argc, char **argv, cli_common *c, balls_args *a)
@@ -59,12 +60,7 @@ static int parse(int argc, char **argv, cli_common *c, balls_args *a)
             if (cli_parse_double(argv[++i], &a->t) || !(a->t > 0 && a->t < 1))
                 return cli_fail(1, "balls: --t takes a number in (0, 1)");
         } else if (!strcmp(o, "--placement")) {
-            const char *v = argv[++i];
-            if (!strcmp(v, "alg1"))
-                a->placement = FL_SKIN_PLACE_ALGORITHM1;
-            else if (!strcmp(v, "subdivision"))
-                a->placement = FL_SKIN_PLACE_SUBDIVISION;
-            else
+            if (cli_parse_skin_placement(argv[++i], &a->placement))
                 return cli_fail(1, "balls: --placement takes alg1 or subdivision");
         } else if (o[0] == '-' && o[1]) {
             return cli_fail(1, "balls: unknown option '%s' (see --help)", o);

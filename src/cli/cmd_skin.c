@@ -44,7 +44,8 @@ static const char *usage_text =
 typedef struct skin_args {
     const char *balls, *mesh, *star;
     double t, cell, epsilon;
-    int has_epsilon, placement;
+    int has_epsilon;
+    fl_skin_placement placement;
 } skin_args;
 
 static int parse(int argc, char **argv, cli_common *c, skin_args *a)
@@ -74,12 +75,7 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
         } else if (!strcmp(o, "--star")) {
             a->star = argv[++i];
         } else if (!strcmp(o, "--placement")) {
-            const char *v = argv[++i];
-            if (!strcmp(v, "alg1"))
-                a->placement = FL_SKIN_PLACE_ALGORITHM1;
-            else if (!strcmp(v, "subdivision"))
-                a->placement = FL_SKIN_PLACE_SUBDIVISION;
-            else
+            if (cli_parse_skin_placement(argv[++i], &a->placement))
                 return cli_fail(1, "skin: --placement takes alg1 or subdivision");
         } else if (o[0] == '-' && o[1]) {
             return cli_fail(1, "skin: unknown option '%s' (see --help)", o);

@@ -76,6 +76,17 @@ int cli_parse_double(const char *s, double *out)
     return 0;
 }
 
+int cli_parse_skin_placement(const char *s, fl_skin_placement *out)
+{
+    if (!strcmp(s, "alg1"))
+        *out = FL_SKIN_PLACE_ALGORITHM1;
+    else if (!strcmp(s, "subdivision"))
+        *out = FL_SKIN_PLACE_SUBDIVISION;
+    else
+        return -1;
+    return 0;
+}
+
 int cli_parse_size(const char *s, size_t *out)
 {
     char *end;

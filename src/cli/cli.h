@@ -31,6 +31,18 @@ int cli_fail(int code, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* The memory limit (memlimit.c): strips `--max-memory SIZE` / `--max-memory=SIZE` from argv
+ * wherever it appears, reads FLINTSTONE_MAX_MEMORY, and sets a soft address-space limit of that
+ * size (default: available memory + free swap) so that an input too large for the machine
+ * fails with FL_ERR_NOMEM (exit 3) instead of an OOM kill. Returns 0, or an exit code after a
+ * printed usage error. */
+int cli_memory_limit_setup(int *argc, char **argv);
+/* Parses a size like 512M, 4G, 100000 or none (0 = no limit); returns 0 on success. */
+int cli_parse_memory_size(const char *s, unsigned long long *out);
+/* After an out-of-memory error: one line on stderr saying which limit applied and how to change
+ * it (nothing when no limit was set). */
+void cli_memory_limit_note(void);
+
 /* Exit code for a status (FL_ERR_NOMEM exits 3). */
 int cli_exit_code(fl_status status);
 

@@ -178,7 +178,9 @@ static int run_weighted(const cli_common *c, const fl_balls *b, int verify, cli_
         double *xyz = malloc(3 * b->count * sizeof(double) + 1);
         if (!xyz) {
             fl_rt3_free(&rt);
-            return cli_fail(3, "out of memory");
+            cli_fail(3, "out of memory");
+            cli_memory_limit_note();
+            return 3;
         }
         for (size_t i = 0; i < b->count; i++)
             memcpy(xyz + 3 * i, b->xyzw + 4 * i, 3 * sizeof(double));

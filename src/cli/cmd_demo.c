@@ -186,7 +186,9 @@ static int run_main(int argc, char **argv, run *r, const char *usage)
                            "the command that reproduces it.");
     if (!pl.page) {
         fl_out_abort(&out);
-        return cli_fail(3, "out of memory");
+        cli_fail(3, "out of memory");
+        cli_memory_limit_note();
+        return 3;
     }
     double t0 = cli_now();
     cli_json_begin(&json, out.fp);

@@ -45,6 +45,7 @@ int cli_report(const fl_error *err)
     char buf[1200];
     fl_error_format(err, buf, sizeof buf);
     fprintf(stderr, "flintstone: error: %s\n", buf);
+    if (err->status == FL_ERR_NOMEM) cli_memory_limit_note();
     return cli_exit_code(err->status == FL_OK ? FL_ERR_ALGORITHM : err->status);
 }
 

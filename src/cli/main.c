@@ -39,7 +39,8 @@ static void usage(FILE *fp)
                 "Closed object boundaries from scattered points.\n\ncommands:\n");
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(fp, "  %-12s %s\n", commands[i].name, commands[i].summary);
-    fprintf(fp, "\nEvery command takes --help, -o PATH (format by extension), --json, --quiet.\n"
+    fprintf(fp, "\nEvery command takes --help, -o PATH (format by extension), --json, --quiet,\n"
+                "and --max-memory SIZE (default: the memory available at start; none = no limit).\n"
                 "Exit codes: 0 ok, 1 usage, 2 bad input, 3 could not complete, 4 I/O failure.\n");
 }
 
@@ -74,6 +75,8 @@ static int output_is_an_input(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    int code = cli_memory_limit_setup(&argc, argv);
+    if (code) return code;
     if (argc < 2) {
         usage(stderr);
         return 1;

@@ -17,7 +17,8 @@ io_test_xy_polygon io_test_balls delaunay_test_sort
 delaunay_test_dt2_verify mesh_test_halfedge mesh_test_mesh_topology mesh_test_polygon_check
 hal_test_hal2_insert graphs_test_gamma_figures reconstruct_test_criteria2
 degenerate_test_delaunay_degenerate degenerate_test_mesh_io_degenerate
-degenerate_test_hal_sweep_degenerate degenerate_test_reconstruct_degenerate"
+degenerate_test_hal_sweep_degenerate degenerate_test_reconstruct_degenerate
+degenerate_test_surface_degenerate"
 mkdir -p "$build/valgrind"
 failed=0
 for t in $subset; do

@@ -51,17 +51,30 @@ static void set_file(fl_error *err, const char *file)
     err->file[n] = '\0';
 }
 
+/* Fills err. The arguments may be err's own message or file (wrapping an inner error:
+ * "skin: %s", err->message), so they are formatted and copied before the struct is cleared. */
+static fl_status fail_v(fl_error *err, fl_status status, const char *file, long line,
+                        long long offset, const char *fmt, va_list ap)
+{
+    char msg[sizeof err->message], where[sizeof err->file];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    snprintf(where, sizeof where, "%s", file ? file : "");
+    fl_error_clear(err);
+    err->status = status;
+    set_file(err, file ? where : NULL);
+    err->line = line < 0 ? -1 : line;
+    err->offset = offset < 0 ? -1 : offset;
+    memcpy(err->message, msg, sizeof msg);
+    return status;
+}
+
 fl_status fl_fail(fl_error *err, fl_status status, const char *file, long line, const char *fmt,
                   ...)
 {
     if (!err) return status;
-    fl_error_clear(err);
-    err->status = status;
-    set_file(err, file);
-    err->line = line < 0 ? -1 : line;
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(err->message, sizeof err->message, fmt, ap);
+    fail_v(err, status, file, line, -1, fmt, ap);
     va_end(ap);
     return status;
 }
@@ -70,13 +83,9 @@ fl_status fl_fail_at_offset(fl_error *err, fl_status status, const char *file, l
                             const char *fmt, ...)
 {
     if (!err) return status;
-    fl_error_clear(err);
-    err->status = status;
-    set_file(err, file);
-    err->offset = offset < 0 ? -1 : offset;
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(err->message, sizeof err->message, fmt, ap);
+    fail_v(err, status, file, -1, offset, fmt, ap);
     va_end(ap);
     return status;
 }

@@ -21,6 +21,23 @@ static void test_error_format_names_file_and_line(void)
     CHECK_EQ_INT(fl_fail(NULL, FL_ERR_IO, NULL, -1, "x"), FL_ERR_IO);
 }
 
+/* Wrapping an inner error in a new one passes err's own message and file as arguments; the
+ * inner text must survive (it used to be cleared before it was read: "skin: "). */
+static void test_fail_can_wrap_its_own_message(void)
+{
+    fl_error err;
+    fl_fail(&err, FL_ERR_ALGORITHM, "in.off", 7, "centres are coplanar");
+    fl_fail(&err, FL_ERR_INPUT, err.file, err.line, "skin: %s", err.message);
+    CHECK_EQ_INT(err.status, FL_ERR_INPUT);
+    CHECK(strcmp(err.message, "skin: centres are coplanar") == 0);
+    CHECK(strcmp(err.file, "in.off") == 0);
+    CHECK_EQ_INT((int)err.line, 7);
+    fl_fail_at_offset(&err, FL_ERR_INPUT, err.file, 12, "again: %s", err.message);
+    CHECK(strcmp(err.message, "again: skin: centres are coplanar") == 0);
+    CHECK(strcmp(err.file, "in.off") == 0);
+    CHECK_EQ_INT((int)err.offset, 12);
+}
+
 static void test_vec_push_of_nothing_on_empty_vec_is_defined(void)
 {
     fl_vec v;
@@ -100,6 +117,7 @@ static void test_path_extension_is_lowercased(void)
 }
 
 FL_TEST_MAIN(FL_TEST_CASE(test_error_format_names_file_and_line),
+             FL_TEST_CASE(test_fail_can_wrap_its_own_message),
              FL_TEST_CASE(test_alloc_array_refuses_overflowing_sizes),
              FL_TEST_CASE(test_vec_grows_and_keeps_contents),
              FL_TEST_CASE(test_vec_push_of_nothing_on_empty_vec_is_defined),

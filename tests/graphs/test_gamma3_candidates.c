@@ -140,7 +140,36 @@ static void test_gamma3_candidates_clusters_and_lattice(void)
     check_set(p, n, "jittered lattice");
 }
 
+/* Duplicates: exactly coincident points are bad input for both methods (FL_ERR_INPUT, nothing
+ * written); near-duplicates 1e-9 apart are valid and give the shortest edges of the set, with
+ * lens tests of huge |f| around them, and must still match the brute force. */
+static void test_gamma3_candidates_duplicates(void)
+{
+    unsigned long long s = 950;
+    double p[3 * 32];
+    for (int i = 0; i < 24; i++)
+        for (int k = 0; k < 3; k++)
+            p[3 * i + k] = fl_test_rand01(&s);
+    for (int i = 24; i < 32; i++)
+        for (int k = 0; k < 3; k++)
+            p[3 * i + k] = p[3 * (i - 24) + k] + (k == i % 3 ? 1e-9 : 0);
+    check_set(p, 32, "near duplicates");
+    p[3 * 31] = p[3 * 7];
+    p[3 * 31 + 1] = p[3 * 7 + 1];
+    p[3 * 31 + 2] = p[3 * 7 + 2]; /* point 31 == point 7 */
+    fl_gamma_params gp = {1, {-1, 1, -0.5, -1e-300}};
+    for (int method = 0; method < 2; method++) {
+        fl_graph_options opt = {method ? FL_GAMMA_BRUTE_FORCE : FL_GAMMA_AUTO, 1, NULL, NULL};
+        fl_graph g;
+        fl_error err;
+        memset(&g, 0, sizeof g);
+        CHECK_STATUS(fl_gamma_graph(p, 32, 3, &gp, &opt, &g, &err), FL_ERR_INPUT, &err);
+        CHECK(g.simplex_count == 0);
+    }
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_gamma3_candidates_random_cube_many_seeds),
+             FL_TEST_CASE(test_gamma3_candidates_duplicates),
              FL_TEST_CASE(test_gamma3_candidates_hull_heavy),
              FL_TEST_CASE(test_gamma3_candidates_near_sphere),
              FL_TEST_CASE(test_gamma3_candidates_slab_and_needle),

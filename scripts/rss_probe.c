@@ -1,6 +1,8 @@
 /* Peak memory of one capability on n generated points, for docs/reliability.md:
- *   rss_probe dt2|dt3|rec3|sweep N
- * Generates the input in memory (uniform square / cube; a torus surface for rec3; a height-field
+ *   rss_probe dt2|dt3|rec3|rec3s|sweep N
+ * Generates the input in memory (uniform square / cube; a torus surface for rec3, which
+ * constriction must close into a sphere and which therefore locks and flips a lot; for rec3s the
+ * genus-0 perturbed sphere of bench/recon3_scale.c, the issue's "closed surface" case; a height-field
  * grid mesh of about 2N triangles for sweep), records the peak RSS (getrusage ru_maxrss), runs
  * the build, and prints the peak again: the difference is the build's own peak (working memory
  * plus its output), reported per input point (per triangle for sweep). Built and run by
@@ -37,7 +39,7 @@ static double now(void)
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) return fprintf(stderr, "usage: rss_probe dt2|dt3|rec3|sweep N\n"), 1;
+    if (argc != 3) return fprintf(stderr, "usage: rss_probe dt2|dt3|rec3|rec3s|sweep N\n"), 1;
     const char *kind = argv[1];
     size_t n = (size_t)strtod(argv[2], NULL), units = n;
     unsigned long long seed = 42;
@@ -49,6 +51,16 @@ int main(int argc, char **argv)
             double u = 6.283185307179586 * rnd(&seed), v = 6.283185307179586 * rnd(&seed);
             c[3 * i] = (2 + cos(v)) * cos(u), c[3 * i + 1] = (2 + cos(v)) * sin(u);
             c[3 * i + 2] = sin(v);
+        }
+    } else if (strcmp(kind, "rec3s") == 0) {
+        for (size_t i = 0; i < n; i++) { /* r(d) = 1 + 0.2 dx dy + 0.15 sin(3 dz), d uniform */
+            double a, b, q;
+            do {
+                a = 2 * rnd(&seed) - 1, b = 2 * rnd(&seed) - 1, q = a * a + b * b;
+            } while (q >= 1 || q == 0);
+            double f = 2 * sqrt(1 - q), d[3] = {a * f, b * f, 1 - 2 * q};
+            double r = 1 + 0.2 * d[0] * d[1] + 0.15 * sin(3 * d[2]);
+            for (int k = 0; k < 3; k++) c[3 * i + k] = r * d[k];
         }
     } else if (strcmp(kind, "sweep") == 0) {
         size_t k = (size_t)sqrt((double)n);
@@ -86,7 +98,7 @@ int main(int argc, char **argv)
         fl_dt3 dt;
         st = fl_dt3_build(c, n, NULL, &dt, &err);
         if (!st) fl_dt3_free(&dt);
-    } else if (strcmp(kind, "rec3") == 0) {
+    } else if (strcmp(kind, "rec3") == 0 || strcmp(kind, "rec3s") == 0) {
         fl_reconstruction3 rec;
         st = fl_reconstruct3(c, n, NULL, &rec, &err);
         if (!st) fl_reconstruction3_free(&rec);

@@ -19,7 +19,12 @@
  * That prunes only where the witnesses are near. A triangle between points sampled from a
  * surface, lying nearly in the surface, has its witness balls spanning the whole object
  * (c1' close to -1) and still costs O(N). fl_gamma_simplices_min_c1 wants only the smallest c1'
- * (what 3D constriction reports as augmented_c0) and avoids most such scans: once some simplex
+ * (what 3D constriction reports as augmented_c0) and avoids most such scans. While the minimum m
+so far is >= 0 (every simplex seen is Delaunay: a flip of a nearly cospherical configuration
+gives such triangles, 12 000 of them for 3e6 points on a surface, each scan O(N) before), a
+simplex matters only if c1' < m, which needs both balls of magnitude m touching its vertices,
+B(t_m) and B(-t_m), to hold a point; near-flat surface triangles have them close to their
+smallest ball, so a box query settles it (side_ball_empty). Once some simplex
  * has c1' = m < 0, another one matters only if c1' < m, i.e. (Lemma 3.2) if a point lies in the
  * symmetric lens N_γ(m, m) = B(-T) ∩ B(T), T = r sqrt(g^2 - 1), g = 1/(1 + m), which lies inside
  * the smallest ball: a point q with d = q - centre and h = d.normal is in it iff
@@ -122,23 +127,29 @@ fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
 }
 
 /* 1 when no point but the simplex's vertices lies in a lens slightly THICKER than N_γ(-kappa,
- * -kappa) (T shrunk by 1e-6, r^2 grown by 1e-9: rounding cannot hide a point), so that
- * c1' > -kappa for certain; 0 when some point may lie in it or the test is not reliable (T
- * beyond 1e6 r, where rounding of T|h| could exceed the margin); -1 on NOMEM. */
+ * -kappa) (T shrunk by 1e-6, r^2 grown by 1e-9, |h| shrunk by an absolute 1e-12 of the
+ * coordinates' magnitude for the rounding of h: rounding cannot hide a point), so that
+ * c1' > -kappa for certain; 0 when some point may lie in it; -1 on NOMEM. As kappa -> 1 the lens
+ * flattens to the disc of H within the smallest ball (T = inf): still decided, only points with
+ * |h| within the rounding margin count. (It used to give up beyond T = 1e6 r; the minimum of
+ * 3D constriction's flipped triangles reaches c1' = -1 + 1e-13 and every later triangle then
+ * had an O(N) scan: over 10 minutes for 3e6 points.) */
 static int lens_empty(const graph_grid *g, const gamma_frame *f, const uint32_t *simplex,
                       double kappa, fl_vec *box)
 {
     double gk = 1 / (1 - kappa), t = f->r * sqrt(gk * gk - 1) * (1 - 1e-6);
-    if (!(kappa > 0 && kappa < 1) || !(t <= 1e6 * f->r) || !(f->r > 0)) return 0;
+    if (!(kappa > 0 && kappa < 1) || !(t >= 0) || !(f->r > 0)) return 0;
     int dim = g->dim;
     double lo[3], hi[3], reach = f->r * (1 + 1e-6);
     for (int k = 0; k < dim; k++) lo[k] = f->center[k] - reach, hi[k] = f->center[k] + reach;
-    /* d2 >= 0, so a point in the lens has |h| < r^2 / (2T): only cells meeting that slab (with
-     * a margin for the rounding of h) can hold one */
-    double mag = 0; /* the cells' corners round at the scale of the coordinates */
+    double mag = 0; /* the cells' corners and h round at the scale of the coordinates */
     for (int k = 0; k < dim; k++)
         mag = fmax(mag, fabs(f->center[k]) + fabs(g->lo[k]) + (double)g->res[k] * g->cell);
-    double half = f->r * f->r * (1 + 1e-9) / (2 * t) * (1 + 1e-6) + 1e-12 * (reach + mag);
+    double herr = 1e-12 * (reach + mag);
+    /* d2 >= 0, so a point in the lens has |h| < r^2 / (2T): only cells meeting that slab (with
+     * the margin for the rounding of h) can hold one */
+    double half = f->r * f->r * (1 + 1e-9) / (2 * t) * (1 + 1e-6) + herr;
+    if (!isfinite(half) || !isfinite(herr)) return 0;
     box->count = 0;
     if (graph_grid_slab(g, lo, hi, f->center, f->normal, half, box) < 0) return -1;
     const uint32_t *items = box->data;
@@ -155,9 +166,54 @@ static int lens_empty(const graph_grid *g, const gamma_frame *f, const uint32_t 
             d2 += d * d;
             h += d * f->normal[k];
         }
-        if (d2 + 2 * t * fabs(h) < r2) return 0;
+        double hh = fmax(fabs(h) - herr, 0); /* t * 0 would be NaN for t = inf */
+        if (d2 < r2 && (hh == 0 || 2 * t * hh < r2 - d2)) return 0;
     }
     return 1;
+}
+
+/* 1 when, for m in [0, 1), one of the two balls B(+t_m), B(-t_m) touching the simplex's
+ * vertices with magnitude m (radius R = r / (1 - m), offset t_m = sqrt(R^2 - r^2), the
+ * magnitude of ball_magnitude in gamma_simplex.c) is certainly empty: no point but the
+ * vertices lies within R (1 + 1e-6) + 1e-12 mag of its centre. Then the simplex has an empty
+ * ball, so it is Delaunay, and the empty offsets [tau(lo), tau(up)] reach past t_m (or -t_m):
+ * c1' = the larger magnitude of their ends >= m. The margin makes the certified ball slightly
+ * larger than B(t_m), so c1' exceeds m by more than the rounding of its own computation.
+ * 0 when both may hold a point, -1 on NOMEM. */
+static int side_ball_empty(const graph_grid *g, const gamma_frame *f, const uint32_t *simplex,
+                           double m, fl_vec *box)
+{
+    if (!(m >= 0 && m < 1) || !(f->r > 0)) return 0;
+    int dim = g->dim;
+    double big = f->r / (1 - m), t = sqrt(fmax(big * big - f->r * f->r, 0));
+    double mag = 0;
+    for (int k = 0; k < dim; k++)
+        mag = fmax(mag, fabs(f->center[k]) + fabs(g->lo[k]) + (double)g->res[k] * g->cell);
+    double reach = big * (1 + 1e-6) + 1e-12 * (mag + big + t);
+    if (!isfinite(reach)) return 0;
+    for (int side = -1; side <= 1; side += 2) {
+        double c[3], lo[3], hi[3];
+        for (int k = 0; k < dim; k++) {
+            c[k] = f->center[k] + side * t * f->normal[k];
+            lo[k] = c[k] - reach, hi[k] = c[k] + reach;
+        }
+        box->count = 0;
+        if (graph_grid_slab(g, lo, hi, c, f->normal, reach, box) < 0) return -1;
+        const uint32_t *items = box->data;
+        int empty = 1;
+        for (size_t i = 0; i < box->count && empty; i++) {
+            uint32_t q = items[i];
+            int own = 0;
+            for (int k = 0; k < dim; k++) own |= simplex[k] == q;
+            if (own) continue;
+            const double *p = g->coords + (size_t)dim * q;
+            double d2 = 0;
+            for (int k = 0; k < dim; k++) d2 += (p[k] - c[k]) * (p[k] - c[k]);
+            empty = !(d2 < reach * reach);
+        }
+        if (empty) return 1;
+    }
+    return 0;
 }
 
 fl_status fl_gamma_simplices_min_c1(const double *coords, size_t n, int dim,
@@ -183,9 +239,9 @@ fl_status fl_gamma_simplices_min_c1(const double *coords, size_t n, int dim,
         const uint32_t *s = simplices + (size_t)dim * i;
         gamma_frame f;
         int r = 0;
-        if (gamma_frame_init(&f, g.coords, dim, s) && m < 0) {
-            r = lens_empty(&g, &f, s, -m, &ring);
-            if (r > 0) continue; /* c1' > m: not the minimum */
+        if (gamma_frame_init(&f, g.coords, dim, s) && !isnan(m)) {
+            r = m < 0 ? lens_empty(&g, &f, s, -m, &ring) : side_ball_empty(&g, &f, s, m, &ring);
+            if (r > 0) continue; /* c1' > m (or >= m, after an earlier index): not the minimum */
         }
         if (r < 0 || (r = simplex_params(&g, s, &ring, &c0, &c1)) < 0) {
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory evaluating γ-neighbourhoods");

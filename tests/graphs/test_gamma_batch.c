@@ -74,7 +74,30 @@ static void compare_on(const double *p, size_t n, int dim, unsigned long long se
     }
     CHECK_EQ_INT(mismatches, 0);
     CHECK(with_params > m / 4); /* the sets are not all blocked: the comparison has content */
-    /* the minimum over the non-Delaunay ones, and over all (blocked ones count as -1) */
+    /* the minimum over the Delaunay ones (c1' >= 0: the ball pruning of min_c1), over the
+     * non-Delaunay ones (the lens pruning), and over all (blocked ones count as -1) */
+    {
+        size_t k = 0;
+        double want = NAN;
+        static uint32_t sd[3 * M];
+        for (size_t i = 0; i < m; i++) {
+            if (!(found[i] && c1[i] >= 0)) continue;
+            memcpy(sd + dim * k, s + dim * i, dim * sizeof *s);
+            k++;
+            if (isnan(want) || c1[i] < want) want = c1[i];
+        }
+        double got;
+        size_t at;
+        CHECK_STATUS(fl_gamma_simplices_min_c1(p, n, dim, sd, k, &got, &at, &err), FL_OK, &err);
+        CHECK_MSG(same_double(got, want), "dim %d Delaunay: min c1' %.17g, brute force %.17g",
+                  dim, got, want);
+        CHECK(k > 10); /* enough Delaunay simplices for the pruning to act */
+        if (k) {
+            double b0, b1;
+            CHECK(at < k && fl_gamma_simplex_params(p, n, dim, sd + dim * at, &b0, &b1) == 1 &&
+                  same_double(b1, want));
+        }
+    }
     for (int pass = 0; pass < 2; pass++) {
         size_t k = 0;
         double want = NAN;

@@ -48,18 +48,18 @@ void c2_heap_free(c2_heap *h);
  * kept edges) rewrite two slots in place, so the living triangles always tile the region inside
  * the current boundary. */
 typedef struct c2_state {
-    const double *xy;      /* n points in the internal numbering (see below) */
+    const double *xy;       /* n points in the internal numbering (see below) */
     size_t n, unique_count; /* internal vertices: n == unique_count */
-    size_t n_input;        /* input points, duplicates included */
+    size_t n_input;         /* input points, duplicates included */
     /* Internal numbering: the distinct points renumbered in the order they first appear in the
      * Delaunay triangles, so that vertices close in the plane are close in memory (the
      * triangulation lists its triangles in a spatially coherent order). Constriction runs
      * along a front, and with the input numbering (shuffled points: random) every vertex it
      * touched was a cache miss in each per-vertex array. Results are mapped back on output;
      * ties between keys are broken by input indices, so the result does not depend on it. */
-    uint32_t *orig;        /* n: internal -> input index (the first of its duplicates) */
-    uint32_t *inv;         /* n_input: input index -> internal index */
-    double *xy_store;      /* owned storage behind xy */
+    uint32_t *orig;   /* n: internal -> input index (the first of its duplicates) */
+    uint32_t *inv;    /* n_input: input index -> internal index */
+    double *xy_store; /* owned storage behind xy */
     size_t tcount;
     uint32_t *tri, *adj;
     uint8_t *alive;

@@ -51,15 +51,12 @@ static c2_entry pop(c2_heap *h)
  * The ladder is not read from heap2.c: these keys straddle any bars in [-1, 1]. */
 static c2_entry random_entry(void)
 {
-    static const double keys[] = {-1,  -0.25, 0,        0.125,  0.5,      0.75, 0.875,
-                                  0.9, 0.99,  0.984375, 0.9999, 1,        2,    -HUGE_VAL,
-                                  HUGE_VAL};
+    static const double keys[] = {-1,   -0.25,    0,      0.125, 0.5, 0.75,      0.875,   0.9,
+                                  0.99, 0.984375, 0.9999, 1,     2,   -HUGE_VAL, HUGE_VAL};
     enum { NKEYS = sizeof keys / sizeof *keys };
     c2_entry e;
     uint32_t r = next_u32() % 64;
-    e.key = r == 0    ? NAN
-            : r < 32  ? keys[r % NKEYS]
-                      : (double)(next_u32() % 1000) / 499.5 - 1.0;
+    e.key = r == 0 ? NAN : r < 32 ? keys[r % NKEYS] : (double)(next_u32() % 1000) / 499.5 - 1.0;
     e.a = next_u32() % 8;
     e.b = next_u32() % 8;
     e.c = next_u32() % 8;

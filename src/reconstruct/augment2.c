@@ -296,7 +296,7 @@ fl_status c2_augment(c2_state *s, int levels, double *c0_used, fl_progress_fn pr
     for (int k = 1; k <= levels && s->boundary_count < s->unique_count; k++) {
         double c0 = k == levels ? -1.0 : -(double)k / levels;
         int hops = k + 2 < 8 ? k + 2 : 8;
-        s->heap.count = 0;
+        c2_heap_clear(&s->heap);
         int r = build_level(s, &dt, &base, sc, c0, hops);
         for (size_t v = 0; v < s->n && !r; v++)
             if (s->on_boundary[v]) r = c2_push_candidates(s, (uint32_t)v);

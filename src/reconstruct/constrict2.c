@@ -21,6 +21,34 @@ int c2_push_candidates(c2_state *s, uint32_t a)
     return c2_heap_push(&s->heap, e);
 }
 
+/* Clears the links between triangle t and its neighbours. */
+static void unlink_face(c2_state *s, uint32_t t)
+{
+    size_t base = 3 * (size_t)t;
+    for (int k = 0; k < 3; k++) {
+        uint32_t u = s->adj[base + k];
+        if (u == C2_NONE) continue;
+        for (int j = 0; j < 3; j++)
+            if (s->adj[3 * (size_t)u + j] == t) s->adj[3 * (size_t)u + j] = C2_NONE;
+        s->adj[base + k] = C2_NONE;
+    }
+}
+
+void c2_settle_adj(c2_state *s)
+{
+    if (!s->lazy_adj) return;
+    for (size_t t = 0; t < s->tcount; t++) {
+        uint32_t *adj = s->adj + 3 * t;
+        if (!s->alive[t]) {
+            adj[0] = adj[1] = adj[2] = C2_NONE;
+            continue;
+        }
+        for (int k = 0; k < 3; k++)
+            if (adj[k] != C2_NONE && !s->alive[adj[k]]) adj[k] = C2_NONE;
+    }
+    s->lazy_adj = 0;
+}
+
 int c2_delete_face(c2_state *s, uint32_t t, uint32_t a)
 {
     size_t base = 3 * (size_t)t;
@@ -29,13 +57,7 @@ int c2_delete_face(c2_state *s, uint32_t t, uint32_t a)
     uint32_t n1 = s->adj[base + (ka + 1) % 3]; /* across c -> a: gets boundary edge a -> c */
     uint32_t n2 = s->adj[base + ka];           /* across b -> c: gets boundary edge c -> b */
     s->alive[t] = 0;
-    for (int k = 0; k < 3; k++) {
-        uint32_t u = s->adj[base + k];
-        if (u == C2_NONE) continue;
-        for (int j = 0; j < 3; j++)
-            if (s->adj[3 * (size_t)u + j] == t) s->adj[3 * (size_t)u + j] = C2_NONE;
-        s->adj[base + k] = C2_NONE;
-    }
+    if (!s->lazy_adj) unlink_face(s, t);
     s->on_boundary[c] = 1;
     s->boundary_count++;
     s->bnext[a] = c;
@@ -91,7 +113,8 @@ fl_status c2_constrict(c2_state *s, fl_progress_fn progress, void *progress_user
             fl_progress(progress, progress_user, "constriction",
                         (double)s->boundary_count / (double)s->unique_count))
             return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
-        if (try_delete(s, c2_heap_pop(&s->heap)))
+        c2_entry e;
+        if (c2_heap_pop(&s->heap, &e) || try_delete(s, e))
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory during constriction");
     }
     return FL_OK;

@@ -21,17 +21,25 @@ typedef struct c2_entry {
     uint32_t a, b, c;
 } c2_entry;
 
-/* 4-ary min-heap (heap2.c) ordered by key, ties by the input indices of (a, b, c) (orig[], or
- * the indices themselves when orig is NULL), so runs are deterministic and do not depend on the
- * internal numbering. */
+/* The priority queue (heap2.c): pops entries in key order, NaN after every number, ties by the
+ * input indices of (a, b, c) (orig[], or the indices themselves when orig is NULL), so runs are
+ * deterministic and do not depend on the internal numbering. Entries whose key is at least the
+ * current bar are parked unsorted; only the others are in the 4-ary heap (see heap2.c). */
 typedef struct c2_heap {
-    c2_entry *items;
-    size_t count, capacity;
+    c2_entry *items; /* the 4-ary heap: keys below the bar */
+    size_t heaped, capacity;
+    c2_entry *parked; /* keys at or above the bar, and NaN keys; unsorted */
+    size_t parked_count, parked_capacity;
+    size_t count; /* heaped + parked_count */
+    int level;    /* the bar is c2_heap's ladder[level]; past the ladder nothing is parked */
     const uint32_t *orig;
 } c2_heap;
 
 int c2_heap_push(c2_heap *h, c2_entry e); /* 0, or -1 when out of memory */
-c2_entry c2_heap_pop(c2_heap *h);         /* requires count > 0 */
+/* Requires count > 0. 0, or -1 when out of memory (*out unchanged): moving parked entries into
+ * the heap may have to grow it. */
+int c2_heap_pop(c2_heap *h, c2_entry *out);
+void c2_heap_clear(c2_heap *h); /* empties it (keeps the memory and orig) */
 void c2_heap_free(c2_heap *h);
 
 /* The pruned triangulation. Triangles keep the slots of the Delaunay triangulation; a deleted
@@ -40,21 +48,23 @@ void c2_heap_free(c2_heap *h);
  * kept edges) rewrite two slots in place, so the living triangles always tile the region inside
  * the current boundary. */
 typedef struct c2_state {
-    const double *xy;      /* n points in the internal numbering (see below) */
+    const double *xy;       /* n points in the internal numbering (see below) */
     size_t n, unique_count; /* internal vertices: n == unique_count */
-    size_t n_input;        /* input points, duplicates included */
+    size_t n_input;         /* input points, duplicates included */
     /* Internal numbering: the distinct points renumbered in the order they first appear in the
      * Delaunay triangles, so that vertices close in the plane are close in memory (the
      * triangulation lists its triangles in a spatially coherent order). Constriction runs
      * along a front, and with the input numbering (shuffled points: random) every vertex it
      * touched was a cache miss in each per-vertex array. Results are mapped back on output;
      * ties between keys are broken by input indices, so the result does not depend on it. */
-    uint32_t *orig;        /* n: internal -> input index (the first of its duplicates) */
-    uint32_t *inv;         /* n_input: input index -> internal index */
-    double *xy_store;      /* owned storage behind xy */
+    uint32_t *orig;   /* n: internal -> input index (the first of its duplicates) */
+    uint32_t *inv;    /* n_input: input index -> internal index */
+    double *xy_store; /* owned storage behind xy */
     size_t tcount;
     uint32_t *tri, *adj;
     uint8_t *alive;
+    int lazy_adj;          /* deletions leave the neighbours' links to the deleted triangle in
+                              place (see c2_settle_adj); the rule above holds only once it is 0 */
     uint32_t *vtri;        /* per vertex: a living triangle at it; only kept up to date once
                               flips may happen (c2_keep_dt makes it), NULL before */
     uint8_t *on_boundary;  /* per vertex */
@@ -124,6 +134,15 @@ static inline int c2_corner(const c2_state *s, uint32_t t, uint32_t v)
 double c2_key(const c2_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t t);
 double c2_gamma_indicator(const double *a, const double *b, const double *c);
 
+/* constrict2.c: plain constriction never follows a link from a living triangle to a deleted
+ * one: the two neighbours that the deletion of face t (edge a->b on the boundary, apex c not)
+ * exposes are across c-a and b-c, and a triangle across an edge at c died only if c were on the
+ * boundary already. So while nothing else reads the links (no flips, no skeleton key, which
+ * looks at the living neighbours), a deletion only clears alive[t] and skips the two random
+ * writes into the neighbours' links (measured: most of the time of a deletion on a 1e6-point
+ * curve). This clears every link to a deleted triangle once, before anything that relies on
+ * "C2_NONE across a boundary edge" runs (c2_keep_dt, called before the first flip). */
+void c2_settle_adj(c2_state *s);
 /* constrict2.c: deletes face t whose edge a->b is on the boundary and whose third vertex is
  * not, and pushes the new boundary edges' candidates. 0, or -1 when out of memory. */
 int c2_delete_face(c2_state *s, uint32_t t, uint32_t a);

@@ -30,6 +30,7 @@ static void state_free(c2_state *s)
 
 int c2_keep_dt(c2_state *s)
 {
+    c2_settle_adj(s);
     if (s->dt_copy) return 0;
     if (!s->vtri) s->vtri = fl_alloc_array(s->n, sizeof *s->vtri);
     if (!s->vtri) return -1;
@@ -99,6 +100,7 @@ static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
     s->unique_count = n;
     s->tcount = tc;
     s->criterion = criterion;
+    s->lazy_adj = criterion != FL_RECONSTRUCT2_VORONOI_SKELETON;
     s->dt_count = tc;
     s->tri = dt->tri;
     s->adj = dt->adj;

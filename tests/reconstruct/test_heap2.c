@@ -1,7 +1,8 @@
-/* The priority queue of constriction (src/reconstruct/heap2.c, a 4-ary heap) against a sorted
- * array: whatever the interleaving of pushes and pops, every pop must return the least entry
- * still queued in the order the thesis' Algorithm 5.1 relies on (key, then the input indices of
- * a, b, c), so that runs are deterministic and independent of the queue's implementation. */
+/* The priority queue of constriction (src/reconstruct/heap2.c, a 4-ary heap of the keys below a
+ * bar plus an unsorted array of the parked keys at or above it) against a sorted array: whatever
+ * the interleaving of pushes and pops, every pop must return the least entry still queued in the
+ * order the thesis' Algorithm 5.1 relies on (key, then the input indices of a, b, c), so that
+ * runs are deterministic and independent of the queue's implementation. */
 #include "fl_test.h"
 #include "reconstruct/constrict2_internal.h"
 
@@ -38,13 +39,24 @@ static int same_entry(c2_entry x, c2_entry y)
     return oracle_cmp(&x, &y) == 0;
 }
 
-/* Keys from a small set (many ties, a few NaN), indices from a small range (ties on a and b). */
+static c2_entry pop(c2_heap *h)
+{
+    c2_entry e = {NAN, C2_NONE, C2_NONE, C2_NONE};
+    CHECK(c2_heap_pop(h, &e) == 0);
+    return e;
+}
+
+/* Keys from a small set (many ties, a few NaN; values on both sides of every bar of heap2.c's
+ * ladder and on the bars themselves, infinities), indices from a small range (ties on a and b).
+ * The ladder is not read from heap2.c: these keys straddle any bars in [-1, 1]. */
 static c2_entry random_entry(void)
 {
-    static const double keys[] = {-1, -0.25, 0, 0.125, 0.5, 1};
+    static const double keys[] = {-1,   -0.25,    0,      0.125, 0.5, 0.75,      0.875,   0.9,
+                                  0.99, 0.984375, 0.9999, 1,     2,   -HUGE_VAL, HUGE_VAL};
+    enum { NKEYS = sizeof keys / sizeof *keys };
     c2_entry e;
     uint32_t r = next_u32() % 64;
-    e.key = r == 0 ? NAN : r < 32 ? keys[r % 6] : (double)(next_u32() % 1000) / 999.0 - 0.5;
+    e.key = r == 0 ? NAN : r < 32 ? keys[r % NKEYS] : (double)(next_u32() % 1000) / 499.5 - 1.0;
     e.a = next_u32() % 8;
     e.b = next_u32() % 8;
     e.c = next_u32() % 8;
@@ -69,7 +81,7 @@ static void run_against_oracle(const uint32_t *orig, size_t ops)
             continue;
         }
         qsort(all, count, sizeof *all, oracle_cmp);
-        c2_entry got = c2_heap_pop(&h);
+        c2_entry got = pop(&h);
         mismatches += !same_entry(got, all[0]);
         memmove(all, all + 1, (count - 1) * sizeof *all);
         count--;
@@ -97,8 +109,8 @@ static void test_heap_breaks_ties_by_input_indices_through_orig(void)
     c2_entry lo = {0.5, 1, 2, 3}, hi = {0.5, 0, 2, 3}; /* orig[1] = 6 < orig[0] = 7 */
     CHECK(c2_heap_push(&h, hi) == 0);
     CHECK(c2_heap_push(&h, lo) == 0);
-    CHECK_EQ_INT(c2_heap_pop(&h).a, 1);
-    CHECK_EQ_INT(c2_heap_pop(&h).a, 0);
+    CHECK_EQ_INT(pop(&h).a, 1);
+    CHECK_EQ_INT(pop(&h).a, 0);
     c2_heap_free(&h);
 }
 
@@ -113,8 +125,43 @@ static void test_heap_survives_growth_past_many_levels(void)
         CHECK(c2_heap_push(&h, e) == 0);
     }
     for (size_t i = 0; i < n; i++)
-        wrong += c2_heap_pop(&h).key != (double)(i + 1);
+        wrong += pop(&h).key != (double)(i + 1);
     CHECK_EQ_INT(wrong, 0);
+    CHECK_EQ_INT(h.count, 0);
+    c2_heap_free(&h);
+}
+
+/* Keys in (-1, 1] pushed in decreasing order interleaved with pops, then emptied: the queue must
+ * return every entry exactly once in order even though most were parked above a bar when they
+ * came (bars are raised only when the heap part runs empty). After c2_heap_clear it starts over
+ * with low keys. */
+static void test_heap_parks_high_keys_and_returns_them_in_order(void)
+{
+    c2_heap h = {0};
+    size_t n = 5000, wrong = 0;
+    double prev = -HUGE_VAL;
+    for (size_t i = 0; i < n; i++) {
+        c2_entry e = {1.0 - 2.0 * (double)i / (double)n, (uint32_t)i, 0, 0};
+        CHECK(c2_heap_push(&h, e) == 0);
+        if (i % 3 == 2) {
+            c2_entry got = pop(&h);
+            wrong += got.key != e.key; /* the newest is the least so far */
+        }
+    }
+    while (h.count > 0) {
+        c2_entry got = pop(&h);
+        wrong += got.key < prev;
+        prev = got.key;
+    }
+    CHECK_EQ_INT(wrong, 0);
+    c2_entry hi = {0.999, 1, 0, 0}, lo = {-0.5, 2, 0, 0};
+    CHECK(c2_heap_push(&h, hi) == 0);
+    c2_heap_clear(&h);
+    CHECK_EQ_INT(h.count, 0);
+    CHECK(c2_heap_push(&h, hi) == 0);
+    CHECK(c2_heap_push(&h, lo) == 0);
+    CHECK_EQ_INT(pop(&h).a, 2);
+    CHECK_EQ_INT(pop(&h).a, 1);
     CHECK_EQ_INT(h.count, 0);
     c2_heap_free(&h);
 }
@@ -125,6 +172,7 @@ int main(void)
         FL_TEST_CASE(test_heap_pops_the_least_entry_with_ties_on_indices),
         FL_TEST_CASE(test_heap_breaks_ties_by_input_indices_through_orig),
         FL_TEST_CASE(test_heap_survives_growth_past_many_levels),
+        FL_TEST_CASE(test_heap_parks_high_keys_and_returns_them_in_order),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

@@ -21,6 +21,7 @@
  * list hold most simplices when a few balls are large, as in the eps-approximation's B*). */
 #include <float.h>
 #include <math.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -78,6 +79,8 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, double 
     const double *b0 = xyzw + 4 * (size_t)idx[0];
     memset(s, 0, sizeof *s);
     s->k = k;
+    for (int i = 0; i < 4; i++)
+        s->ball[i] = i <= k ? idx[i] : UINT32_MAX;
     for (int c = 0; c < 3; c++)
         s->a[c] = b0[c];
     double g[3][3], rhs[3];
@@ -147,14 +150,25 @@ static double simplex_value(const skin_simplex *s, double t, const double *x)
     return q2 - t / (1 - t) * p2 + t * s->w;
 }
 
-double fl_skin_function_value(const fl_skin_function *skin, const double x[3])
+int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell)
 {
-    size_t cell = 0;
+    size_t id = 0;
     for (int c = 2; c >= 0; c--) {
         double u = floor((x[c] - skin->origin[c]) / skin->cell);
-        if (!(u >= 0 && u < (double)skin->dims[c])) return HUGE_VAL;
-        cell = cell * skin->dims[c] + (size_t)u;
+        if (!(u >= 0 && u < (double)skin->dims[c])) return 0;
+        id = id * skin->dims[c] + (size_t)u;
     }
+    *cell = id;
+    return 1;
+}
+
+/* The minimum over the candidates the index lists at x (G wherever G < 0 and near the
+ * simplices with a positive ball, HUGE_VAL where nothing is listed); the fallback and test
+ * reference of the mixed-cell walk (skin_cell.c). */
+double skin_value_scan(const fl_skin_function *skin, const double x[3])
+{
+    size_t cell = 0;
+    if (!skin_index_cell(skin, x, &cell)) return HUGE_VAL;
     double best = HUGE_VAL;
     for (size_t i = skin->cell_start[cell]; i < skin->cell_start[cell + 1]; i++) {
         double v = simplex_value(&skin->simplex[skin->cell_item[i]], skin->t, x);
@@ -169,6 +183,10 @@ void fl_skin_function_free(fl_skin_function *skin)
     free(skin->simplex);
     free(skin->cell_start);
     free(skin->cell_item);
+    free(skin->balls);
+    free(skin->link_start);
+    free(skin->link);
+    free(skin->hint);
     free(skin);
 }
 
@@ -331,8 +349,38 @@ static rt_tuple *rt_tuples(const fl_rt3 *rt, size_t *count)
  * p = (1-t)(a - f), so z* = f + p/(1-t) = a lies in X. Listing X only near its mixed cell is
  * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
  * ball spans many simplices. */
-static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, double t,
-                              fl_error *err)
+/* The link of the simplex of tuples tup[i..j) (one tuple per tetrahedron holding it): the
+ * balls of those tetrahedra outside X, each once, appended to link. Every coface X + b of X is
+ * a face of some tetrahedron, so this is the whole link (skin_cell.c walks along it). */
+static int simplex_link(fl_vec *link, const rt_tuple *tup, size_t i, size_t j,
+                        const uint32_t *tets)
+{
+    size_t first = link->count;
+    for (size_t q = i; q < j; q++) {
+        if (tup[q].tet == UINT32_MAX) continue; /* a hull face is a face of a tetrahedron too */
+        for (int c = 0; c < 4; c++) {
+            uint32_t b = tets[4 * (size_t)tup[q].tet + (size_t)c];
+            int seen = b == tup[i].v[0] || b == tup[i].v[1] || b == tup[i].v[2] || b == tup[i].v[3];
+            const uint32_t *have = (const uint32_t *)link->data;
+            for (size_t l = first; l < link->count && !seen; l++)
+                seen = have[l] == b;
+            if (!seen && fl_vec_push(link, &b, 1)) return -1;
+        }
+    }
+    return 0;
+}
+
+/* Every simplex of the regular triangulation once (sorted by its balls), with its mixed-cell box
+ * and its link (link_start gets one entry a simplex). The power face
+ * nu_X of X is the convex hull of the Voronoi vertices of the tetrahedra around X (unbounded
+ * when X lies on the hull), so its box is theirs. Edelsbrunner's mixed cells (1-t) X + t nu_X
+ * cover space, and on the mixed cell of X the skin function is X's quadric: with x = (1-t) a +
+ * t v, a in X and v in nu_X (v - f orthogonal to aff X), the parallel part of x - f is
+ * p = (1-t)(a - f), so z* = f + p/(1-t) = a lies in X. Listing X only near its mixed cell is
+ * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
+ * ball spans many simplices. */
+static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const double *xyzw,
+                              size_t n, double t, fl_error *err)
 {
     fl_rt3 rt;
     fl_status st = fl_rt3_build(xyzw, n, NULL, &rt, err);
@@ -342,16 +390,12 @@ static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, double t,
     size_t m = 0;
     rt_tuple *tup = rt_tuples(&rt, &m);
     double *vor = fl_alloc_array(rt.tet_count + 1, 4 * sizeof(double));
-    if (!tup || !vor) {
-        free(tup);
-        free(vor);
-        fl_rt3_free(&rt);
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
-    }
+    if (!tup || !vor) goto nomem;
     for (size_t i = 0; i < rt.tet_count; i++)
         voronoi_vertex(xyzw, rt.tet + 4 * i, vor + 4 * i);
-    fl_rt3_free(&rt);
     qsort(tup, m, sizeof(rt_tuple), cmp_tuple);
+    size_t zero = 0;
+    if (fl_vec_push(link_start, &zero, 1)) goto nomem;
     for (size_t i = 0, j; i < m; i = j) {
         double nlo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, nhi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
         int bounded = 1;
@@ -369,15 +413,21 @@ static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, double t,
         int k = 0;
         while (k < 4 && tup[i].v[k] != UINT32_MAX)
             k++;
-        if (add_simplex(v, xyzw, tup[i].v, k - 1, t, bounded ? nlo : NULL, nhi)) {
-            free(tup);
-            free(vor);
-            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
-        }
+        size_t before = v->count;
+        if (add_simplex(v, xyzw, tup[i].v, k - 1, t, bounded ? nlo : NULL, nhi)) goto nomem;
+        if (v->count == before) continue; /* dropped (affinely dependent): no link either */
+        if (simplex_link(link, tup, i, j, rt.tet) || fl_vec_push(link_start, &link->count, 1))
+            goto nomem;
     }
     free(tup);
     free(vor);
+    fl_rt3_free(&rt);
     return FL_OK;
+nomem:
+    free(tup);
+    free(vor);
+    fl_rt3_free(&rt);
+    return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
 }
 
 /* ---- the grid index ---- */
@@ -636,16 +686,32 @@ fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_f
     if (!sk) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     sk->t = t;
     sk->wmax = wmax;
-    fl_vec v;
+    fl_vec v, link, link_start;
     fl_vec_init(&v, sizeof(skin_simplex));
+    fl_vec_init(&link, sizeof(uint32_t));
+    fl_vec_init(&link_start, sizeof(size_t));
     fl_status st = FL_OK;
     if (n <= 8) {
         if (subsets(&v, xyzw, n, t)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     } else {
-        st = rt_simplices(&v, xyzw, n, t, err);
+        st = rt_simplices(&v, &link, &link_start, xyzw, n, t, err);
+        sk->walkable = !st;
     }
     sk->simplex_count = v.count;
     sk->simplex = fl_vec_release(&v);
+    sk->link = fl_vec_release(&link);
+    sk->link_start = fl_vec_release(&link_start);
+    if (!st && sk->walkable) {
+        /* the walk reads the balls of the link; one word of shared hint (skin_cell.c) */
+        sk->balls = fl_alloc_array(4 * n, sizeof(double));
+        sk->hint = calloc(1, sizeof *sk->hint);
+        if (!sk->balls || !sk->hint) {
+            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+        } else {
+            memcpy(sk->balls, xyzw, 4 * n * sizeof(double));
+            atomic_init(sk->hint, 0);
+        }
+    }
     if (!st) st = build_index(sk, err);
     if (st) {
         fl_skin_function_free(sk);

@@ -67,7 +67,8 @@ static void neighbour_key(const skin_simplex *s, int drop, uint32_t add, uint32_
 }
 
 /* Whether x lies in the mixed cell of simplex id: 1 with *val = G(x); 0 with *next the
- * neighbouring cell across the most violated test; -1 when that neighbour is not listed. */
+ * neighbouring cell across the most violated test; -1 when that neighbour is not listed or the
+ * cell is shaky (its tests are not trustworthy; the caller scans). */
 static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, double *val,
                      uint32_t *next)
 {
@@ -117,7 +118,10 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         double e[3] = {b[0] - b0[0], b[1] - b0[1], b[2] - b0[2]};
         double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2], el = sqrt(e2);
         double h = -2 * (ut[0] * e[0] + ut[1] * e[1] + ut[2] * e[2]) + t * (e2 - b[3] + b0[3]);
-        double tol = SKIN_WALK_SLACK * (2 * utl * el + t * (e2 + fabs(b[3]) + fabs(b0[3])));
+        /* rounding of h: a few ulps of its terms' sizes (the weight difference is exact for
+         * close weights); not of |w_b| + |w_a|, which for two nearly coincident balls of equal
+         * weight (B* has mirror pairs 1e-17 apart) accepted points far outside the thin cell */
+        double tol = SKIN_WALK_SLACK * (2 * utl * el + t * (e2 + fabs(b[3] - b0[3])));
         if (!(h >= -tol) && !(h / el >= worst_h)) { /* most violated per unit distance */
             worst_h = h == h ? h / el : -HUGE_VAL;
             add = sk->link[l];
@@ -128,6 +132,12 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         neighbour_key(s, -1, add, key);
         *next = find_simplex(sk, key);
         return *next == UINT32_MAX ? -1 : 0;
+    }
+    if (s->shaky) return -1;
+    for (int c = 0; s->box_exact && c < 3; c++) { /* t v = ut + t a within t box(nu_X) */
+        double tv = ut[c] + t * s->a[c];
+        double pad = SKIN_WALK_SLACK * (fabs(tv) + t * (fabs(s->nu_lo[c]) + fabs(s->nu_hi[c])));
+        if (!(tv >= t * s->nu_lo[c] - pad && tv <= t * s->nu_hi[c] + pad)) return -1;
     }
     *val = q2 - t / (1 - t) * p2 + t * s->w;
     return 1;
@@ -156,13 +166,13 @@ double skin_value_walk(const fl_skin_function *sk, const double x[3], uint32_t *
         *start = cur;
         return val;
     }
+    /* a far start: restart next to x from the index (or go on walking outside it) */
     size_t cell = 0;
-    if (skin_index_cell(sk, x, &cell) && sk->cell_start[cell] < sk->cell_start[cell + 1]) {
+    if (skin_index_cell(sk, x, &cell) && sk->cell_start[cell] < sk->cell_start[cell + 1])
         cur = sk->cell_item[sk->cell_start[cell]];
-        if (walk(sk, x, &cur, SKIN_WALK_FAR, &val)) {
-            *start = cur;
-            return val;
-        }
+    if (walk(sk, x, &cur, SKIN_WALK_FAR, &val)) {
+        *start = cur;
+        return val;
     }
     return skin_value_scan(sk, x);
 }

@@ -36,6 +36,15 @@ typedef struct skin_simplex {
     /* The balls of X, sorted, UINT32_MAX padding (the key the mixed-cell walk looks faces and
      * cofaces up by; skin_cell.c). */
     uint32_t ball[4];
+    /* 1 when the walk must not trust X's membership test: X is a face of a sliver whose
+     * Voronoi vertex is decided by rounding, or its Gram matrix is ill-conditioned (its
+     * barycentric coordinates are noise); a walk ending in X falls back to the scan. */
+    int shaky;
+    /* box_exact only: the box of X's power face nu_X (the Voronoi vertices around X with their
+     * rounding pads). The walk requires v in it as well as the link tests: for a degenerate nu_X
+     * (cospherical balls, as in B* of symmetric solids) the link half-spaces all pass through
+     * one point and bound a wedge, not the face. */
+    double nu_lo[3], nu_hi[3];
 } skin_simplex;
 
 struct fl_skin_function {

@@ -99,6 +99,14 @@ for spec in "${eps_cases[@]}"; do
   e_json=$("$fl" skin "$mesh" --epsilon "$eps" --star "$out/star.xyzw" --json) ||
     { echo "ERROR|skin $name|approximation not verified"; continue; }
   echo "NOTE|skin $name|approximation: $e_json"
-  run_case "$name, B* of $(wc -l <"$out/star.xyzw") balls" "$out/star.xyzw" \
-    --cell "$(sed -n 's/.*"cell":\([^,}]*\).*/\1/p' <<<"$e_json")"
+  # B* is full of exact degeneracies (cospherical groups, mirror twins 1e-17 apart on symmetry
+  # planes): CGAL's mesher (inexact constructions) then returns a broken surface (cube eps 0.5:
+  # 59 components at the bounding octahedron's dummy balls, self-intersections). Both meshers
+  # therefore get the same B* with its centres moved by at most SKIN_EPS_PERTURB/2 per coordinate
+  # (fixed seed): the skin moves by about as much, far below both meshes' chordal errors.
+  awk -v d="${SKIN_EPS_PERTURB:-1e-7}" 'BEGIN { srand(3) } { printf "%.17g %.17g %.17g %.17g\n",
+    $1 + d * (rand() - 0.5), $2 + d * (rand() - 0.5), $3 + d * (rand() - 0.5), $4 }' \
+    "$out/star.xyzw" >"$out/star_p.xyzw"
+  run_case "$name, B* of $(wc -l <"$out/star.xyzw") balls, centres perturbed ${SKIN_EPS_PERTURB:-1e-7}" \
+    "$out/star_p.xyzw" --cell "$(sed -n 's/.*"cell":\([^,}]*\).*/\1/p' <<<"$e_json")"
 done

@@ -7,7 +7,8 @@
 # at the default cell and at a coarser cell (SKIN_COARSE_CELL_FACTOR, default 3x) closer to
 # CGAL's mesh size. Notes give both mesh sizes and the largest distance from the vertices of
 # each mesh to the other mesh (`flintstone closest`, exact point-to-mesh distances; a sampled
-# lower bound of the Hausdorff distance between the two meshes).
+# lower bound of the Hausdorff distance between the two meshes) and the certified Hausdorff
+# distance between the two surfaces (`flintstone hausdorff --both`, [lower, upper]).
 set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -48,20 +49,22 @@ run_case() { # NAME BALLS CELL_ARGS...
   done
   off_vertices "$out/ours.off" >"$out/ours.xyz"
   off_vertices "$out/cgal.off" >"$out/cgal.xyz"
-  local d1 d2 ov of euler
+  local d1 d2 ov of euler hd
   d1=$(max_dist "$out/cgal.off" "$out/ours.xyz")
   d2=$(max_dist "$out/ours.off" "$out/cgal.xyz")
+  # the certified Hausdorff distance between the two meshes' surfaces ([lower, upper])
+  hd=$("$fl" hausdorff "$out/ours.off" "$out/cgal.off" --both --relative 1e-3 --budget 60 --json |
+    sed -n 's/.*"hausdorff":\[\([^]]*\)\].*/\1/p')
   ov=$(sed -n 's/.*"vertices":\([0-9]*\).*/\1/p' <<<"$o_json")
   of=$(sed -n 's/.*"faces":\([0-9]*\).*/\1/p' <<<"$o_json")
   euler=$(sed -n 's/.*"euler":\(-*[0-9]*\).*/\1/p' <<<"$o_json")
-  printf 'ROW|skin %s|%s|CGAL make_skin_surface_mesh_3|%s|-|ours V=%s F=%s Euler %s, CGAL V=%s F=%s; max vertex-to-other-mesh distance ours->CGAL %.3g, CGAL->ours %.3g\n' \
+  printf 'ROW|skin %s|%s|CGAL make_skin_surface_mesh_3|%s|-|ours V=%s F=%s Euler %s, CGAL V=%s F=%s; max vertex-to-other-mesh distance ours->CGAL %.3g, CGAL->ours %.3g; Hausdorff [%s]\n' \
     "$name" "$(median <<<"${o_times%$'\n'}")" "$(median <<<"${p_times%$'\n'}")" "$ov" "$of" \
-    "$euler" "$(field vertices "$p_line")" "$(field faces "$p_line")" "$d1" "$d2"
+    "$euler" "$(field vertices "$p_line")" "$(field faces "$p_line")" "$d1" "$d2" "$hd"
 }
 
 factor=${SKIN_COARSE_CELL_FACTOR:-3}
-# SKIN_CASES: ';'-separated cases, e.g. "random 50 7;helix 120" (a helix of 120 balls is slow
-# for our mesher: its long simplices make the index's candidate lists long; docs/skin.md)
+# SKIN_CASES: ';'-separated cases, e.g. "random 50 7;helix 120" (issue #12's sets)
 IFS=';' read -r -a cases <<<"${SKIN_CASES:-random 50 7;random 200 11}"
 for spec in "${cases[@]}"; do
   set -- $spec

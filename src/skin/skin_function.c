@@ -21,6 +21,7 @@
  * list hold most simplices when a few balls are large, as in the eps-approximation's B*). */
 #include <float.h>
 #include <math.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -78,6 +79,8 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, double 
     const double *b0 = xyzw + 4 * (size_t)idx[0];
     memset(s, 0, sizeof *s);
     s->k = k;
+    for (int i = 0; i < 4; i++)
+        s->ball[i] = i <= k ? idx[i] : UINT32_MAX;
     for (int c = 0; c < 3; c++)
         s->a[c] = b0[c];
     double g[3][3], rhs[3];
@@ -93,6 +96,15 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, double 
         rhs[i] = 0.5 * (g[i][i] - xyzw[4 * (size_t)idx[i + 1] + 3] + b0[3]);
     }
     if (k > 0 && invert_gram(k, g, s->ginv)) return -1;
+    /* condition estimate k |G|_max |G^-1|_max: above 1e10 the coordinates mu lose all but a
+     * few digits, so the mixed-cell walk does not trust them (skin_cell.c) */
+    double gmax = 0, imax = 0;
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j < k; j++) {
+            gmax = fmax(gmax, fabs(g[i][j]));
+            imax = fmax(imax, fabs(s->ginv[i][j]));
+        }
+    s->shaky = !(k * gmax * imax <= 1e10);
     for (int c = 0; c < 3; c++)
         s->f[c] = s->a[c];
     for (int i = 0; i < k; i++) {
@@ -147,14 +159,25 @@ static double simplex_value(const skin_simplex *s, double t, const double *x)
     return q2 - t / (1 - t) * p2 + t * s->w;
 }
 
-double fl_skin_function_value(const fl_skin_function *skin, const double x[3])
+int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell)
 {
-    size_t cell = 0;
+    size_t id = 0;
     for (int c = 2; c >= 0; c--) {
         double u = floor((x[c] - skin->origin[c]) / skin->cell);
-        if (!(u >= 0 && u < (double)skin->dims[c])) return HUGE_VAL;
-        cell = cell * skin->dims[c] + (size_t)u;
+        if (!(u >= 0 && u < (double)skin->dims[c])) return 0;
+        id = id * skin->dims[c] + (size_t)u;
     }
+    *cell = id;
+    return 1;
+}
+
+/* The minimum over the candidates the index lists at x (G wherever G < 0 and near the
+ * simplices with a positive ball, HUGE_VAL where nothing is listed); the fallback and test
+ * reference of the mixed-cell walk (skin_cell.c). */
+double skin_value_scan(const fl_skin_function *skin, const double x[3])
+{
+    size_t cell = 0;
+    if (!skin_index_cell(skin, x, &cell)) return HUGE_VAL;
     double best = HUGE_VAL;
     for (size_t i = skin->cell_start[cell]; i < skin->cell_start[cell + 1]; i++) {
         double v = simplex_value(&skin->simplex[skin->cell_item[i]], skin->t, x);
@@ -169,12 +192,18 @@ void fl_skin_function_free(fl_skin_function *skin)
     free(skin->simplex);
     free(skin->cell_start);
     free(skin->cell_item);
+    free(skin->balls);
+    free(skin->link_start);
+    free(skin->link);
+    free(skin->hint);
     free(skin);
 }
 
 /* ---- candidate simplices ---- */
 
 static void simplex_box(const skin_simplex *s, double lo[3], double hi[3]);
+static double dot3(const double *u, const double *v);
+static void cross3(const double *u, const double *v, double *w);
 
 /* How far around a simplex X its fallback index cells reach, in units of X's reach: the index
  * then lists X wherever G < (margin^2 - 1) t max w_X could have X as the minimiser, so G is
@@ -200,6 +229,8 @@ static int add_simplex(fl_vec *v, const double *xyzw, const uint32_t *idx, int k
         /* the mixed cell is (1-t) X + t nu_X; the slack covers the rounding of this sum */
         double mlo = (1 - t) * lo[c] + t * nu_lo[c], mhi = (1 - t) * hi[c] + t * nu_hi[c];
         double slack = 1e-12 * (fabs(mlo) + fabs(mhi));
+        s.nu_lo[c] = nu_lo[c];
+        s.nu_hi[c] = nu_hi[c];
         s.lo[c] = fmax(s.lo[c], mlo - slack);
         s.hi[c] = fmin(s.hi[c], mhi + slack);
     }
@@ -228,6 +259,7 @@ static int subsets(fl_vec *v, const double *xyzw, size_t n, double t)
 typedef struct rt_tuple {
     uint32_t v[4]; /* sorted ball indices, UINT32_MAX padding */
     uint32_t tet;
+    uint32_t hull; /* the hull face it comes from (tet = UINT32_MAX), else UINT32_MAX */
 } rt_tuple;
 
 static int cmp_tuple(const void *pa, const void *pb)
@@ -317,6 +349,7 @@ static rt_tuple *rt_tuples(const fl_rt3 *rt, size_t *count)
                 for (int i = k; i < 4; i++)
                     u->v[i] = UINT32_MAX;
                 u->tet = pass ? UINT32_MAX : (uint32_t)q;
+                u->hull = pass ? (uint32_t)q : UINT32_MAX;
             }
     }
     *count = m;
@@ -331,8 +364,114 @@ static rt_tuple *rt_tuples(const fl_rt3 *rt, size_t *count)
  * p = (1-t)(a - f), so z* = f + p/(1-t) = a lies in X. Listing X only near its mixed cell is
  * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
  * ball spans many simplices. */
-static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, double t,
-                              fl_error *err)
+/* The link of the simplex of tuples tup[i..j) (one tuple per tetrahedron holding it): the
+ * balls of those tetrahedra outside X, each once, appended to link. Every coface X + b of X is
+ * a face of some tetrahedron, so this is the whole link (skin_cell.c walks along it). */
+static int simplex_link(fl_vec *link, const rt_tuple *tup, size_t i, size_t j,
+                        const uint32_t *tets)
+{
+    size_t first = link->count;
+    for (size_t q = i; q < j; q++) {
+        if (tup[q].tet == UINT32_MAX) continue; /* a hull face is a face of a tetrahedron too */
+        for (int c = 0; c < 4; c++) {
+            uint32_t b = tets[4 * (size_t)tup[q].tet + (size_t)c];
+            int seen = b == tup[i].v[0] || b == tup[i].v[1] || b == tup[i].v[2] || b == tup[i].v[3];
+            const uint32_t *have = (const uint32_t *)link->data;
+            for (size_t l = first; l < link->count && !seen; l++)
+                seen = have[l] == b;
+            if (!seen && fl_vec_push(link, &b, 1)) return -1;
+        }
+    }
+    return 0;
+}
+
+/* Whether the power face nu_X of the simplex of tuples tup[i..j) may be degenerate, i.e.
+ * the Voronoi vertices of the tetrahedra around X do not span dim = 3 - k dimensions by more
+ * than their rounding pads (greedy extents: farthest point, then farthest from that line, then
+ * from that plane). Cospherical balls (B* of a symmetric solid) give such faces; the link
+ * half-spaces then bound a wedge through the face instead of the face, or a face thinner than
+ * the rounding of the tests, so the walk must not trust X's membership test (skin_cell.c).
+ * For a hull simplex (unbounded nu_X) only its finite vertices count: a face with too few of
+ * them is reported too, which only sends more queries to the scan. */
+static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *vor,
+                         const fl_rt3 *rt, const double *xyzw, int dim)
+{
+    enum { MAXP = 512 };
+    double pts[MAXP][3], pad = 0, base[3];
+    int np = 0;
+    for (size_t q = i; q < j; q++) /* the finite vertices */
+        if (tup[q].tet != UINT32_MAX) {
+            const double *o = vor + 4 * (size_t)tup[q].tet;
+            if (np == MAXP) return 1;
+            pad = fmax(pad, o[3]);
+            for (int c = 0; c < 3; c++)
+                pts[np][c] = o[c];
+            np++;
+        }
+    for (int c = 0; c < 3; c++)
+        base[c] = np ? pts[0][c] : xyzw[4 * (size_t)tup[i].v[0] + (size_t)c];
+    double scale = 1 + fabs(base[0]) + fabs(base[1]) + fabs(base[2]);
+    for (size_t q = i; q < j; q++) /* the rays: the normals of the hull faces around X */
+        if (tup[q].hull != UINT32_MAX) {
+            const uint32_t *f = rt->hull_faces + 3 * (size_t)tup[q].hull;
+            const double *z0 = xyzw + 4 * (size_t)f[0], *z1 = xyzw + 4 * (size_t)f[1];
+            const double *z2 = xyzw + 4 * (size_t)f[2];
+            double u[3], w[3], n[3];
+            for (int c = 0; c < 3; c++) {
+                u[c] = z1[c] - z0[c];
+                w[c] = z2[c] - z0[c];
+            }
+            cross3(u, w, n);
+            double nl = sqrt(dot3(n, n));
+            if (!(nl > 0) || np == MAXP) return 1;
+            for (int c = 0; c < 3; c++)
+                pts[np][c] = base[c] + scale * n[c] / nl;
+            np++;
+        }
+    if (np == 0) return 1;
+    int sel[4] = {0, 0, 0, 0};
+    double ext = 0;
+    for (int d = 1; d <= dim; d++) {
+        double best = -1, a[3], b[3], n[3];
+        for (int c = 0; c < 3; c++) {
+            a[c] = pts[sel[1]][c] - pts[0][c];
+            b[c] = pts[sel[2]][c] - pts[0][c];
+        }
+        cross3(a, b, n);
+        for (int q = 0; q < np; q++) {
+            double u[3], m[3], dist;
+            for (int c = 0; c < 3; c++)
+                u[c] = pts[q][c] - pts[0][c];
+            if (d == 1) {
+                dist = sqrt(dot3(u, u));
+            } else if (d == 2) { /* distance from the line p0 p1 */
+                cross3(a, u, m);
+                dist = sqrt(dot3(m, m) / dot3(a, a));
+            } else { /* from the plane p0 p1 p2 */
+                dist = fabs(dot3(n, u)) / sqrt(dot3(n, n));
+            }
+            if (dist > best) {
+                best = dist;
+                sel[d] = q;
+            }
+        }
+        if (d == 1) ext = best;
+        if (!(best > 64 * pad + 1e-9 * ext)) return 1;
+    }
+    return 0;
+}
+
+/* Every simplex of the regular triangulation once (sorted by its balls), with its mixed-cell box
+ * and its link (link_start gets one entry a simplex). The power face
+ * nu_X of X is the convex hull of the Voronoi vertices of the tetrahedra around X (unbounded
+ * when X lies on the hull), so its box is theirs. Edelsbrunner's mixed cells (1-t) X + t nu_X
+ * cover space, and on the mixed cell of X the skin function is X's quadric: with x = (1-t) a +
+ * t v, a in X and v in nu_X (v - f orthogonal to aff X), the parallel part of x - f is
+ * p = (1-t)(a - f), so z* = f + p/(1-t) = a lies in X. Listing X only near its mixed cell is
+ * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
+ * ball spans many simplices. */
+static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const double *xyzw,
+                              size_t n, double t, fl_error *err)
 {
     fl_rt3 rt;
     fl_status st = fl_rt3_build(xyzw, n, NULL, &rt, err);
@@ -342,23 +481,20 @@ static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, double t,
     size_t m = 0;
     rt_tuple *tup = rt_tuples(&rt, &m);
     double *vor = fl_alloc_array(rt.tet_count + 1, 4 * sizeof(double));
-    if (!tup || !vor) {
-        free(tup);
-        free(vor);
-        fl_rt3_free(&rt);
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
-    }
+    if (!tup || !vor) goto nomem;
     for (size_t i = 0; i < rt.tet_count; i++)
         voronoi_vertex(xyzw, rt.tet + 4 * i, vor + 4 * i);
-    fl_rt3_free(&rt);
     qsort(tup, m, sizeof(rt_tuple), cmp_tuple);
+    size_t zero = 0;
+    if (fl_vec_push(link_start, &zero, 1)) goto nomem;
     for (size_t i = 0, j; i < m; i = j) {
         double nlo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, nhi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-        int bounded = 1;
+        int bounded = 1, sliver = 0;
         for (j = i; j < m && !cmp_tuple(tup + i, tup + j); j++) {
             const double *o = tup[j].tet == UINT32_MAX ? NULL : vor + 4 * (size_t)tup[j].tet;
             if (!o || !(o[3] >= 0)) {
                 bounded = 0;
+                sliver |= o != NULL;
                 continue;
             }
             for (int c = 0; c < 3; c++) {
@@ -369,15 +505,23 @@ static fl_status rt_simplices(fl_vec *v, const double *xyzw, size_t n, double t,
         int k = 0;
         while (k < 4 && tup[i].v[k] != UINT32_MAX)
             k++;
-        if (add_simplex(v, xyzw, tup[i].v, k - 1, t, bounded ? nlo : NULL, nhi)) {
-            free(tup);
-            free(vor);
-            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
-        }
+        size_t before = v->count;
+        if (add_simplex(v, xyzw, tup[i].v, k - 1, t, bounded ? nlo : NULL, nhi)) goto nomem;
+        if (v->count == before) continue; /* dropped (affinely dependent): no link either */
+        ((skin_simplex *)v->data)[before].shaky |=
+            sliver || (k - 1 < 3 && nu_degenerate(tup, i, j, vor, &rt, xyzw, 4 - k));
+        if (simplex_link(link, tup, i, j, rt.tet) || fl_vec_push(link_start, &link->count, 1))
+            goto nomem;
     }
     free(tup);
     free(vor);
+    fl_rt3_free(&rt);
     return FL_OK;
+nomem:
+    free(tup);
+    free(vor);
+    fl_rt3_free(&rt);
+    return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
 }
 
 /* ---- the grid index ---- */
@@ -636,16 +780,32 @@ fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_f
     if (!sk) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     sk->t = t;
     sk->wmax = wmax;
-    fl_vec v;
+    fl_vec v, link, link_start;
     fl_vec_init(&v, sizeof(skin_simplex));
+    fl_vec_init(&link, sizeof(uint32_t));
+    fl_vec_init(&link_start, sizeof(size_t));
     fl_status st = FL_OK;
     if (n <= 8) {
         if (subsets(&v, xyzw, n, t)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     } else {
-        st = rt_simplices(&v, xyzw, n, t, err);
+        st = rt_simplices(&v, &link, &link_start, xyzw, n, t, err);
+        sk->walkable = !st;
     }
     sk->simplex_count = v.count;
     sk->simplex = fl_vec_release(&v);
+    sk->link = fl_vec_release(&link);
+    sk->link_start = fl_vec_release(&link_start);
+    if (!st && sk->walkable) {
+        /* the walk reads the balls of the link; one word of shared hint (skin_cell.c) */
+        sk->balls = fl_alloc_array(4 * n, sizeof(double));
+        sk->hint = calloc(1, sizeof *sk->hint);
+        if (!sk->balls || !sk->hint) {
+            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+        } else {
+            memcpy(sk->balls, xyzw, 4 * n * sizeof(double));
+            atomic_init(sk->hint, 0);
+        }
+    }
     if (!st) st = build_index(sk, err);
     if (st) {
         fl_skin_function_free(sk);

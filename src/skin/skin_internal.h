@@ -33,6 +33,18 @@ typedef struct skin_simplex {
      * vertex is not trustworthy, and the subsets of few balls) with a finer nearness test. */
     double lo[3], hi[3];
     int box_exact;
+    /* The balls of X, sorted, UINT32_MAX padding (the key the mixed-cell walk looks faces and
+     * cofaces up by; skin_cell.c). */
+    uint32_t ball[4];
+    /* 1 when the walk must not trust X's membership test: X is a face of a sliver whose
+     * Voronoi vertex is decided by rounding, or its Gram matrix is ill-conditioned (its
+     * barycentric coordinates are noise); a walk ending in X falls back to the scan. */
+    int shaky;
+    /* box_exact only: the box of X's power face nu_X (the Voronoi vertices around X with their
+     * rounding pads). The walk requires v in it as well as the link tests: for a degenerate nu_X
+     * (cospherical balls, as in B* of symmetric solids) the link half-spaces all pass through
+     * one point and bound a wedge, not the face. */
+    double nu_lo[3], nu_hi[3];
 } skin_simplex;
 
 struct fl_skin_function {
@@ -46,6 +58,29 @@ struct fl_skin_function {
     size_t dims[3];
     size_t *cell_start;
     uint32_t *cell_item;
+    /* The mixed complex for point location (skin_cell.c), only for the regular-triangulation
+     * path (walkable = 1; the few-ball subset path scans): the simplices are sorted by ball[],
+     * link_start/link list the link of each simplex (the balls b with X + b a simplex), balls
+     * is a copy of the input, and *hint the simplex of the previous evaluation (relaxed atomic:
+     * any value is a correct start, so concurrent callers only lose speed). */
+    int walkable;
+    double *balls;
+    size_t *link_start;
+    uint32_t *link;
+    _Atomic uint32_t *hint;
 };
+
+/* ==== mixed-cell point location (skin_cell.c; added by h-skinspeed) ====
+ * skin_value_walk: G(x) by locating the mixed cell of x with a walk from simplex *start
+ * (updated to the cell found) and evaluating that one quadric; falls back to the candidate scan
+ * when the walk does not end within its step cap (degenerate cells, rounding) or the function is
+ * not walkable. fl_skin_function_value calls it with the shared hint; a caller with its own
+ * sequence of nearby points (one per thread) can keep its own start (initialise to 0).
+ * skin_value_scan: the candidate scan alone (the reference the tests compare the walk with).
+ * skin_index_cell: the index cell holding x (0 when x is outside the index). */
+double skin_value_walk(const fl_skin_function *skin, const double x[3], uint32_t *start);
+double skin_value_scan(const fl_skin_function *skin, const double x[3]);
+int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell);
+/* end of mixed-cell point location */
 
 #endif

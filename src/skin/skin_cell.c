@@ -1,0 +1,187 @@
+/* Point location in the mixed complex: G(x) from one quadric instead of a candidate scan.
+ *
+ * Edelsbrunner's mixed cells mu_X = (1-t) X + t nu_X, X over the simplices of the regular
+ * triangulation and nu_X its power face, tile R^3 for 0 < t < 1, and on mu_X the skin function
+ * is X's quadric (skin_function.c, docs/skin.md "The skin function"). Writing x - f = p + q
+ * (parallel / orthogonal to aff X, f the focus of X), x = (1-t) z + t v with z = f + p/(1-t)
+ * in aff X and v = f + q/t in aff nu_X, so
+ *     x in mu_X  <=>  z in X (barycentric coordinates >= 0)  and  v in nu_X.
+ * nu_X is the convex polytope whose facets are the power faces of the cofaces X + b, b in the
+ * link of X, so v in nu_X <=> pi_b(v) >= pi_X(v) for every link ball b (a linear test).
+ * The facets of mu_X are (1-t) Y + t nu_X for the facets Y of X, shared with mu_Y, and
+ * (1-t) X + t nu_{X+b}, shared with mu_{X+b}; so a violated test names the neighbouring cell
+ * on the far side of it: drop the vertex with a negative barycentric coordinate, or add the
+ * link ball b whose test fails. The mesher evaluates neighbouring points, so starting from the
+ * previous point's cell the walk ends after 0-2 steps. A walk that does not end within its step
+ * cap (degenerate power faces, rounding near a shared boundary) or reaches a simplex that was
+ * dropped (affinely dependent centres) falls back to the candidate scan, which is correct on
+ * its own; so the walk only changes the speed, never the value beyond rounding. */
+#include <math.h>
+#include <stdatomic.h>
+
+#include "skin/skin_internal.h"
+
+/* Relative slack of the membership tests: x within it of mu_X is accepted (the quadrics of
+ * neighbouring cells agree on their common boundary, G is C^1, so the value differs from G by
+ * rounding-sized amounts), which also keeps two neighbours from both rejecting a boundary point. */
+#define SKIN_WALK_SLACK 1e-12
+/* Steps from the caller's start, then from the index cell's first simplex. */
+#define SKIN_WALK_NEAR 8
+#define SKIN_WALK_FAR 96
+
+static int key_cmp(const uint32_t *a, const uint32_t *b)
+{
+    for (int i = 0; i < 4; i++)
+        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+    return 0;
+}
+
+/* The simplex with balls key (sorted, padded), or UINT32_MAX when it is not in the list. */
+static uint32_t find_simplex(const fl_skin_function *sk, const uint32_t key[4])
+{
+    size_t lo = 0, hi = sk->simplex_count;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        int c = key_cmp(sk->simplex[mid].ball, key);
+        if (c == 0) return (uint32_t)mid;
+        if (c < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return UINT32_MAX;
+}
+
+/* The key of s without its ball number drop, or with ball add (add != UINT32_MAX). */
+static void neighbour_key(const skin_simplex *s, int drop, uint32_t add, uint32_t key[4])
+{
+    int m = 0;
+    for (int i = 0; i <= s->k; i++) {
+        if (i == drop) continue;
+        if (add != UINT32_MAX && add < s->ball[i] && (m == 0 || key[m - 1] < add)) key[m++] = add;
+        key[m++] = s->ball[i];
+    }
+    if (add != UINT32_MAX && (m == 0 || key[m - 1] < add)) key[m++] = add;
+    while (m < 4)
+        key[m++] = UINT32_MAX;
+}
+
+/* Whether x lies in the mixed cell of simplex id: 1 with *val = G(x); 0 with *next the
+ * neighbouring cell across the most violated test; -1 when that neighbour is not listed or the
+ * cell is shaky (its tests are not trustworthy; the caller scans). */
+static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, double *val,
+                     uint32_t *next)
+{
+    const skin_simplex *s = &sk->simplex[id];
+    double t = sk->t, d[3], et[3], mu[4], xi[3] = {0, 0, 0}, sum = 0;
+    for (int c = 0; c < 3; c++)
+        d[c] = x[c] - s->a[c];
+    for (int i = 0; i < s->k; i++)
+        et[i] = s->e[i][0] * d[0] + s->e[i][1] * d[1] + s->e[i][2] * d[2];
+    for (int i = 0; i < s->k; i++) {
+        for (int j = 0; j < s->k; j++)
+            xi[i] += s->ginv[i][j] * et[j];
+        mu[i + 1] = s->mu_f[i] + (xi[i] - s->mu_f[i]) / (1 - t); /* z* in the frame of s */
+        sum += mu[i + 1];
+    }
+    mu[0] = 1 - sum;
+    int worst = -1;
+    double wv = -SKIN_WALK_SLACK;
+    for (int i = 0; s->k > 0 && i <= s->k; i++)
+        if (!(mu[i] >= wv)) { /* NaN counts as violated: never accept it as inside */
+            worst = i;
+            wv = mu[i] == mu[i] ? mu[i] : -HUGE_VAL;
+        }
+    if (worst >= 0) {
+        uint32_t key[4];
+        neighbour_key(s, worst, UINT32_MAX, key);
+        *next = find_simplex(sk, key);
+        return *next == UINT32_MAX ? -1 : 0;
+    }
+    double proj[3], q[3], ut[3], q2 = 0, p2 = 0;
+    for (int c = 0; c < 3; c++) {
+        proj[c] = s->a[c];
+        for (int i = 0; i < s->k; i++)
+            proj[c] += xi[i] * s->e[i][c];
+        q[c] = x[c] - proj[c];
+        q2 += q[c] * q[c];
+        p2 += (proj[c] - s->f[c]) * (proj[c] - s->f[c]);
+        ut[c] = t * (s->f[c] - s->a[c]) + q[c]; /* t (v - a), v = f + q/t in aff nu_X */
+    }
+    /* v in nu_X: pi_b(v) - pi_X(v) = -2 (v - a).e_b + |e_b|^2 - w_b + w_a >= 0 for every link
+     * ball b (e_b = z_b - a), times t so that small t does not amplify q/t */
+    const double *b0 = sk->balls + 4 * (size_t)s->ball[0];
+    double utl = sqrt(ut[0] * ut[0] + ut[1] * ut[1] + ut[2] * ut[2]), worst_h = 0;
+    uint32_t add = UINT32_MAX;
+    for (size_t l = sk->link_start[id]; l < sk->link_start[id + 1]; l++) {
+        const double *b = sk->balls + 4 * (size_t)sk->link[l];
+        double e[3] = {b[0] - b0[0], b[1] - b0[1], b[2] - b0[2]};
+        double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2], el = sqrt(e2);
+        double h = -2 * (ut[0] * e[0] + ut[1] * e[1] + ut[2] * e[2]) + t * (e2 - b[3] + b0[3]);
+        /* rounding of h: a few ulps of its terms' sizes (the weight difference is exact for
+         * close weights); not of |w_b| + |w_a|, which for two nearly coincident balls of equal
+         * weight (B* has mirror pairs 1e-17 apart) accepted points far outside the thin cell */
+        double tol = SKIN_WALK_SLACK * (2 * utl * el + t * (e2 + fabs(b[3] - b0[3])));
+        if (!(h >= -tol) && !(h / el >= worst_h)) { /* most violated per unit distance */
+            worst_h = h == h ? h / el : -HUGE_VAL;
+            add = sk->link[l];
+        }
+    }
+    if (add != UINT32_MAX) {
+        uint32_t key[4];
+        neighbour_key(s, -1, add, key);
+        *next = find_simplex(sk, key);
+        return *next == UINT32_MAX ? -1 : 0;
+    }
+    if (s->shaky) return -1;
+    for (int c = 0; s->box_exact && c < 3; c++) { /* t v = ut + t a within t box(nu_X) */
+        double tv = ut[c] + t * s->a[c];
+        double pad = SKIN_WALK_SLACK * (fabs(tv) + t * (fabs(s->nu_lo[c]) + fabs(s->nu_hi[c])));
+        if (!(tv >= t * s->nu_lo[c] - pad && tv <= t * s->nu_hi[c] + pad)) return -1;
+    }
+    *val = q2 - t / (1 - t) * p2 + t * s->w;
+    return 1;
+}
+
+/* Walks from *cur for at most steps cells; 1 with *val when the cell of x was found. */
+static int walk(const fl_skin_function *sk, const double *x, uint32_t *cur, int steps,
+                double *val)
+{
+    for (int i = 0; i < steps; i++) {
+        uint32_t next = 0;
+        int r = cell_test(sk, *cur, x, val, &next);
+        if (r) return r > 0;
+        *cur = next;
+    }
+    return 0;
+}
+
+double skin_value_walk(const fl_skin_function *sk, const double x[3], uint32_t *start)
+{
+    if (!sk->walkable || sk->simplex_count == 0) return skin_value_scan(sk, x);
+    if (!(fabs(x[0]) <= 1e150 && fabs(x[1]) <= 1e150 && fabs(x[2]) <= 1e150)) return HUGE_VAL;
+    double val = HUGE_VAL;
+    uint32_t cur = *start < sk->simplex_count ? *start : 0;
+    if (walk(sk, x, &cur, SKIN_WALK_NEAR, &val)) {
+        *start = cur;
+        return val;
+    }
+    /* a far start: restart next to x from the index (or go on walking outside it) */
+    size_t cell = 0;
+    if (skin_index_cell(sk, x, &cell) && sk->cell_start[cell] < sk->cell_start[cell + 1])
+        cur = sk->cell_item[sk->cell_start[cell]];
+    if (walk(sk, x, &cur, SKIN_WALK_FAR, &val)) {
+        *start = cur;
+        return val;
+    }
+    return skin_value_scan(sk, x);
+}
+
+double fl_skin_function_value(const fl_skin_function *skin, const double x[3])
+{
+    if (!skin->walkable) return skin_value_scan(skin, x);
+    uint32_t h = atomic_load_explicit(skin->hint, memory_order_relaxed);
+    double v = skin_value_walk(skin, x, &h);
+    atomic_store_explicit(skin->hint, h, memory_order_relaxed);
+    return v;
+}

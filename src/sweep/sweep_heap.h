@@ -11,6 +11,7 @@ typedef struct fl_sweep_entry {
     double key;  /* priority: a lower bound on the region's distance (+ base, see query.c) */
     double base; /* the cursor's travelled distance when the bound was computed */
     uint32_t node;
+    uint32_t partial; /* 1: the key is only the box bound; measure the element when at front */
 } fl_sweep_entry;
 
 typedef struct fl_sweep_heap {

@@ -14,9 +14,18 @@
 #include "sweep/sweep_internal.h"
 
 typedef struct range {
-    size_t start, end; /* triangles perm[start..end) */
+    size_t start, end; /* triangles rec[start..end) */
     uint32_t node;
 } range;
+
+/* A triangle during the build: its corners and centroid inline, so that the median splits
+ * move the records themselves and every pass over a node's triangles streams through memory
+ * (an index array into the mesh made the build wait on cache misses, issue #9). */
+typedef struct tri_rec {
+    double c[9];
+    double centroid[3];
+    uint32_t id;
+} tri_rec;
 
 /* Eigenvectors (columns of vec) of the symmetric 3x3 matrix a by cyclic Jacobi rotations;
  * the eigenvalues are left on a's diagonal. */
@@ -54,20 +63,20 @@ static void jacobi3(double a[3][3], double vec[3][3])
     }
 }
 
-/* Gathers the corners of every stride-th triangle of perm[start..end) into pts (9 doubles a
+/* Gathers the corners of every stride-th triangle of rec[start..end) into pts (9 doubles a
  * triangle, so the passes below stream through memory) and returns the principal frame of
  * these points (their count is returned): mean
  * and axes e[0], e[1] (largest spread first) and the normal e[2]. One pass: moments about the
  * first point (shifted, so that a mesh far from the origin does not cancel the covariance);
  * the frame only shapes the element, whose radius is measured afterwards. */
-static size_t gather_frame(const double *corners, const uint32_t *perm, size_t start, size_t end,
-                           size_t stride, double *pts, double *mean, double e[3][3])
+static size_t gather_frame(const tri_rec *rec, size_t start, size_t end, size_t stride, double *pts,
+                           double *mean, double e[3][3])
 {
-    const double *ref = corners + 9 * (size_t)perm[start];
+    const double *ref = rec[start].c;
     double sum[3] = {0, 0, 0}, s2[6] = {0, 0, 0, 0, 0, 0};
     size_t n = 0;
     for (size_t i = start; i < end; i += stride) {
-        const double *t = corners + 9 * (size_t)perm[i];
+        const double *t = rec[i].c;
         for (int k = 0; k < 3; k++, n++) {
             double x = t[3 * k] - ref[0], y = t[3 * k + 1] - ref[1], z = t[3 * k + 2] - ref[2];
             pts[3 * n] = t[3 * k], pts[3 * n + 1] = t[3 * k + 1], pts[3 * n + 2] = t[3 * k + 2];
@@ -226,14 +235,13 @@ static double tri_dist2(const tri_frame *f, const double *v, const double *p)
  * Also rep, the vertex nearest to the sample's mean: a point of the shape inside the element,
  * whose distance bounds the distance to the node's triangles from above (query.c). pts and uv
  * are scratch room for 9 and 6 doubles a sampled triangle. */
-static void bounding_triangle(const double *corners, const uint32_t *perm, size_t start,
-                              size_t end, double scale, double *pts, double *uv,
-                              fl_sweep_node *node)
+static void bounding_triangle(const tri_rec *rec, size_t start, size_t end, double scale,
+                              double *pts, double *uv, fl_sweep_node *node)
 {
     double mean[3], e[3][3], lo[3] = {INFINITY, INFINITY, INFINITY};
     double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     size_t stride = (end - start + FL_SWEEP_SAMPLE - 1) / FL_SWEEP_SAMPLE;
-    size_t n = gather_frame(corners, perm, start, end, stride, pts, mean, e);
+    size_t n = gather_frame(rec, start, end, stride, pts, mean, e);
     for (size_t i = 0; i < n; i++) {
         const double *p = pts + 3 * i;
         for (int a = 0; a < 3; a++) {
@@ -256,9 +264,8 @@ static void bounding_triangle(const double *corners, const uint32_t *perm, size_
     tri_frame f;
     tri_frame_init(&f, node->v);
     for (size_t i = start; i < end; i++) {
-        const double *t = corners + 9 * (size_t)perm[i];
         for (int k = 0; k < 3; k++) {
-            const double *p = t + 3 * k;
+            const double *p = rec[i].c + 3 * k;
             double d2 = tri_dist2(&f, node->v, p);
             eps2 = d2 > eps2 ? d2 : eps2;
             double r2 = (p[0] - mean[0]) * (p[0] - mean[0]) +
@@ -272,24 +279,23 @@ static void bounding_triangle(const double *corners, const uint32_t *perm, size_
     node->eps = fl_sweep_widen(sqrt(eps2), scale);
 }
 
-/* Reorders perm[start..end) so that perm[mid] has the median key and smaller keys precede
- * it (Hoare quickselect on the centroid coordinate `axis`). */
-static void select_median(uint32_t *perm, const double *centroid, int axis, size_t start,
-                          size_t mid, size_t end)
+/* Reorders rec[start..end) so that rec[mid] has the median centroid coordinate `axis` and
+ * smaller ones precede it (Hoare quickselect). */
+static void select_median(tri_rec *rec, int axis, size_t start, size_t mid, size_t end)
 {
     size_t lo = start, hi = end - 1;
     while (lo < hi) {
-        double pivot = centroid[3 * (size_t)perm[lo + (hi - lo) / 2] + axis];
+        double pivot = rec[lo + (hi - lo) / 2].centroid[axis];
         size_t i = lo, j = hi;
         while (i <= j) {
-            while (centroid[3 * (size_t)perm[i] + axis] < pivot)
+            while (rec[i].centroid[axis] < pivot)
                 i++;
-            while (centroid[3 * (size_t)perm[j] + axis] > pivot)
+            while (rec[j].centroid[axis] > pivot)
                 j--;
             if (i <= j) {
-                uint32_t t = perm[i];
-                perm[i] = perm[j];
-                perm[j] = t;
+                tri_rec tmp = rec[i];
+                rec[i] = rec[j];
+                rec[j] = tmp;
                 i++;
                 if (j == 0) break;
                 j--;
@@ -304,12 +310,12 @@ static void select_median(uint32_t *perm, const double *centroid, int axis, size
     }
 }
 
-static int widest_axis(const uint32_t *perm, const double *centroid, size_t start, size_t end)
+static int widest_axis(const tri_rec *rec, size_t start, size_t end)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = start; i < end; i++)
         for (int c = 0; c < 3; c++) {
-            double x = centroid[3 * (size_t)perm[i] + c];
+            double x = rec[i].centroid[c];
             lo[c] = x < lo[c] ? x : lo[c];
             hi[c] = x > hi[c] ? x : hi[c];
         }
@@ -319,12 +325,12 @@ static int widest_axis(const uint32_t *perm, const double *centroid, size_t star
     return axis;
 }
 
-static void set_leaf(const double *corners, uint32_t t, fl_sweep_node *node)
+static void set_leaf(const tri_rec *rec, fl_sweep_node *node)
 {
-    memcpy(node->v, corners + 9 * (size_t)t, 9 * sizeof *node->v);
+    memcpy(node->v, rec->c, 9 * sizeof *node->v);
     node->eps = 0;
     node->child[0] = node->child[1] = FL_SWEEP_LEAF;
-    node->element = t;
+    node->element = rec->id;
 }
 
 static fl_status check_mesh(const fl_mesh *m, fl_error *err)
@@ -349,10 +355,9 @@ static fl_status check_mesh(const fl_mesh *m, fl_error *err)
     return FL_OK;
 }
 
-/* Splits triangle ranges top-down; nodes are numbered in creation order, root first.
- * corners: the triangles' corners, 9 doubles each. */
-static fl_status split_ranges(fl_sweep *s, const double *corners, uint32_t *perm,
-                              const double *centroid, const fl_sweep_options *opt, fl_error *err)
+/* Splits triangle ranges top-down; nodes are numbered in creation order, root first. */
+static fl_status split_ranges(fl_sweep *s, tri_rec *rec, const fl_sweep_options *opt,
+                              fl_error *err)
 {
     range *stack = fl_alloc_array(s->node_count, sizeof *stack);
     double *uv = fl_alloc_array(FL_SWEEP_SAMPLE, 6 * sizeof *uv);
@@ -366,7 +371,7 @@ static fl_status split_ranges(fl_sweep *s, const double *corners, uint32_t *perm
         range r = stack[--top];
         fl_sweep_node *node = s->nodes + r.node;
         if (r.end - r.start == 1) {
-            set_leaf(corners, perm[r.start], node);
+            set_leaf(rec + r.start, node);
             if ((++done & 0xffff) == 0 && opt &&
                 fl_progress(opt->progress, opt->progress_user, "sweep hierarchy",
                             (double)done / (double)s->elements)) {
@@ -375,10 +380,9 @@ static fl_status split_ranges(fl_sweep *s, const double *corners, uint32_t *perm
             }
             continue;
         }
-        bounding_triangle(corners, perm, r.start, r.end, s->scale, pts, uv, node);
+        bounding_triangle(rec, r.start, r.end, s->scale, pts, uv, node);
         size_t mid = r.start + (r.end - r.start) / 2;
-        select_median(perm, centroid, widest_axis(perm, centroid, r.start, r.end), r.start, mid,
-                      r.end);
+        select_median(rec, widest_axis(rec, r.start, r.end), r.start, mid, r.end);
         node->element = FL_SWEEP_LEAF;
         node->child[0] = (uint32_t)next;
         node->child[1] = (uint32_t)(next + 1);
@@ -400,11 +404,9 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
     fl_status st = check_mesh(mesh, err);
     if (st != FL_OK) return st;
     size_t n = mesh->triangle_count;
-    uint32_t *perm = fl_alloc_array(n, sizeof *perm);
-    double *centroid = fl_alloc_array(n, 3 * sizeof *centroid);
-    double *corners = fl_alloc_array(n, 9 * sizeof *corners);
+    tri_rec *rec = fl_alloc_array(n, sizeof *rec);
     fl_sweep *s = NULL;
-    if (!perm || !centroid || !corners) {
+    if (!rec) {
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
     } else {
         st = fl_sweep_alloc(3, 1, n, &s, err);
@@ -413,15 +415,14 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
         for (size_t v = 0; v < 3 * mesh->vertex_count; v++)
             s->scale = fmax(s->scale, fabs(mesh->xyz[v]));
         for (size_t t = 0; t < n; t++) {
-            perm[t] = (uint32_t)t;
+            tri_rec *r = rec + t;
+            r->id = (uint32_t)t;
             for (int k = 0; k < 3; k++)
-                memcpy(corners + 9 * t + 3 * k, mesh->xyz + 3 * (size_t)mesh->tri[3 * t + k],
-                       3 * sizeof *corners);
+                memcpy(r->c + 3 * k, mesh->xyz + 3 * (size_t)mesh->tri[3 * t + k], 3 * sizeof *r->c);
             for (int c = 0; c < 3; c++)
-                centroid[3 * t + c] = (corners[9 * t + c] + corners[9 * t + 3 + c] +
-                                       corners[9 * t + 6 + c]) / 3;
+                r->centroid[c] = (r->c[c] + r->c[3 + c] + r->c[6 + c]) / 3;
         }
-        st = split_ranges(s, corners, perm, centroid, opt, err);
+        st = split_ranges(s, rec, opt, err);
     }
     if (st == FL_OK) { /* the topology, for fl_sweep_update_vertices */
         s->tri = fl_alloc_array(n, 3 * sizeof *s->tri);
@@ -431,9 +432,7 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
         else
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
     }
-    free(perm);
-    free(centroid);
-    free(corners);
+    free(rec);
     if (st != FL_OK) {
         fl_sweep_free(s);
         return st;

@@ -79,13 +79,18 @@ static double upper_bound(const fl_sweep *s, const fl_sweep_node *node, const do
     return sqrt(r2) + slack;
 }
 
-/* Queues an entry: into the heap if it may hold this query's answer, else at the back. */
-static void enqueue(fl_sweep_cursor *cur, const search *st, fl_sweep_entry e)
+/* Queues an entry: into the heap if it may hold this query's answer, else at the back. With
+ * `replace`, the entry takes the place of the heap's front (which the caller has consumed). */
+static void enqueue(fl_sweep_cursor *cur, const search *st, fl_sweep_entry e, int replace)
 {
     if (e.key - cur->travelled <= st->upper) {
-        fl_sweep_heap_push(&cur->h, e);
+        if (replace)
+            fl_sweep_heap_replace_top(&cur->h, e);
+        else
+            fl_sweep_heap_push(&cur->h, e);
         return;
     }
+    if (replace) fl_sweep_heap_pop(&cur->h);
     cur->h.e[cur->s->node_count - 1 - cur->back_n++] = e;
     if (e.key < cur->back_min) cur->back_min = e.key;
 }
@@ -104,8 +109,10 @@ static void pending(fl_sweep_cursor *cur)
 /* Computes a region's interval at the current query and queues it (clean). With boxes
  * (boxes.c) the box distance comes first: a region whose box is already beyond the best upper
  * bound cannot hold this query's answer, so it is queued on its box bound alone ("partial")
- * and its element is measured only if it ever reaches the front. `full` forces the element. */
-static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t id, int full)
+ * and its element is measured only if it ever reaches the front. `full` forces the element;
+ * `replace`: the result takes the place of the heap's front (a pop and a push in one). */
+static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t id, int full,
+                  int replace)
 {
     const fl_sweep *s = cur->s;
     const fl_sweep_node *node = s->nodes + id;
@@ -116,7 +123,8 @@ static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t i
     if (s->box) {
         box_lo = sqrt(fl_sweep_box_dist2(s->box + 6 * (size_t)id, q3)) - widen;
         if (!full && box_lo > st->upper) {
-            enqueue(cur, st, (fl_sweep_entry){box_lo + cur->travelled, cur->travelled, id, 1});
+            enqueue(cur, st, (fl_sweep_entry){box_lo + cur->travelled, cur->travelled, id, 1},
+                    replace);
             return;
         }
     }
@@ -133,7 +141,7 @@ static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t i
         st->best_leaf = id;
     }
     if (hi < st->upper) st->upper = hi;
-    enqueue(cur, st, (fl_sweep_entry){lo + cur->travelled, cur->travelled, id, 0});
+    enqueue(cur, st, (fl_sweep_entry){lo + cur->travelled, cur->travelled, id, 0}, replace);
 }
 
 /* The current lower bound of a queued region (§5.1: widened by the moves since its base). */
@@ -206,7 +214,7 @@ static int advance(fl_sweep_cursor *cur, const double *q3, search *st)
     cur->back_min = INFINITY;
     cur->started = 1;
     cur->reset_cost = SIZE_MAX;
-    visit(cur, st, q3, 0, 1);
+    visit(cur, st, q3, 0, 1, 0);
     return 1;
 }
 
@@ -239,8 +247,7 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
         fl_sweep_entry top = h->e[0];
         const fl_sweep_node *node = s->nodes + top.node;
         if (top.base != cur->travelled || top.partial) {
-            fl_sweep_heap_pop(h);
-            visit(cur, &st, q3, top.node, top.base == cur->travelled);
+            visit(cur, &st, q3, top.node, top.base == cur->travelled, 1);
             continue;
         }
         if (fl_sweep_is_leaf(node)) {
@@ -253,9 +260,8 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
             approximate(s, &st, current_lower(cur, &top), q3, r);
             break;
         }
-        fl_sweep_heap_pop(h);
-        visit(cur, &st, q3, node->child[0], 0);
-        visit(cur, &st, q3, node->child[1], 0);
+        visit(cur, &st, q3, node->child[0], 0, 1);
+        visit(cur, &st, q3, node->child[1], 0, 0);
     }
     if (cur->reset_cost == SIZE_MAX) cur->reset_cost = st.visited;
     cur->last_cost = st.visited;

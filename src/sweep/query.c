@@ -232,6 +232,29 @@ static void seed_upper(fl_sweep_cursor *cur, search *st, const double *q3)
     st->best_leaf_d = d;
 }
 
+/* A first upper bound for a query from the root: follow the nearer box down to one leaf (a
+ * few box distances) and take that element's distance, so that from the first split on every
+ * region whose box lies beyond it is queued without an element solve (issue #9; the role of
+ * CGAL's closest-vertex hint, without a separate search structure). */
+static void seed_descent(fl_sweep_cursor *cur, search *st, const double *q3)
+{
+    const fl_sweep *s = cur->s;
+    if (!s->box) return;
+    uint32_t id = 0;
+    while (!fl_sweep_is_leaf(s->nodes + id)) {
+        uint32_t a = s->nodes[id].child[0], b = s->nodes[id].child[1];
+        double da = fl_sweep_box_dist2(s->box + 6 * (size_t)a, q3);
+        double db = fl_sweep_box_dist2(s->box + 6 * (size_t)b, q3);
+        id = db < da ? b : a;
+    }
+    double bary[3], c[3];
+    double d = fl_sweep_node_distance(s, s->nodes + id, q3, bary, c);
+    st->visited++;
+    if (d + st->slack < st->upper) st->upper = d + st->slack;
+    st->best_leaf = id;
+    st->best_leaf_d = d;
+}
+
 /* The priority process (§3.2) on the kept queue: refresh dirty fronts, split clean internal
  * fronts; the first clean leaf at the front is the answer, or stop once the interval fits the
  * tolerance. The answer stays queued for the next query. */
@@ -241,7 +264,10 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
     search st = {INFINITY, FL_SWEEP_LEAF, INFINITY, fl_sweep_query_slack(s, q3), 0};
     fl_sweep_heap *h = &cur->h;
     cur->have_ball = 0;
-    if (!advance(cur, q3, &st)) seed_upper(cur, &st, q3);
+    if (advance(cur, q3, &st))
+        seed_descent(cur, &st, q3);
+    else
+        seed_upper(cur, &st, q3);
     for (;;) {
         pending(cur);
         fl_sweep_entry top = h->e[0];

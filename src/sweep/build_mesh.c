@@ -63,6 +63,44 @@ static void jacobi3(double a[3][3], double vec[3][3])
     }
 }
 
+/* A frame for a node of a few triangles without the eigen-solve: the normal is their summed
+ * (area-weighted) normal, e[0] the first triangle's first edge in that plane. Near the leaves
+ * this fixed cost per node dominated the build (issue #9). Returns 0 when the triangles are
+ * too degenerate or large for it; the caller then fits the principal frame. */
+static int normal_frame(const tri_rec *rec, size_t start, size_t end, double e[3][3])
+{
+    double nrm[3] = {0, 0, 0};
+    for (size_t i = start; i < end; i++) {
+        const double *c = rec[i].c;
+        double a[3] = {c[3] - c[0], c[4] - c[1], c[5] - c[2]};
+        double b[3] = {c[6] - c[0], c[7] - c[1], c[8] - c[2]};
+        nrm[0] += a[1] * b[2] - a[2] * b[1];
+        nrm[1] += a[2] * b[0] - a[0] * b[2];
+        nrm[2] += a[0] * b[1] - a[1] * b[0];
+    }
+    double len = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    if (!(len > 0) || !isfinite(len)) return 0;
+    const double *c = rec[start].c;
+    double d[3] = {c[3] - c[0], c[4] - c[1], c[5] - c[2]}, h = 0, u2 = 0, d2 = 0;
+    for (int k = 0; k < 3; k++) {
+        e[2][k] = nrm[k] / len;
+        h += d[k] * e[2][k];
+    }
+    for (int k = 0; k < 3; k++) {
+        d2 += d[k] * d[k];
+        d[k] -= h * e[2][k];
+        u2 += d[k] * d[k];
+    }
+    if (!(u2 > 1e-12 * d2) || !isfinite(d2)) return 0;
+    double inv = 1 / sqrt(u2);
+    for (int k = 0; k < 3; k++)
+        e[0][k] = d[k] * inv;
+    e[1][0] = e[2][1] * e[0][2] - e[2][2] * e[0][1];
+    e[1][1] = e[2][2] * e[0][0] - e[2][0] * e[0][2];
+    e[1][2] = e[2][0] * e[0][1] - e[2][1] * e[0][0];
+    return 1;
+}
+
 /* Gathers the corners of every stride-th triangle of rec[start..end) into pts (9 doubles a
  * triangle, so the passes below stream through memory) and returns the principal frame of
  * these points (their count is returned): mean
@@ -92,6 +130,7 @@ static size_t gather_frame(const tri_rec *rec, size_t start, size_t end, size_t 
         for (int c = 0; c < 3; c++)
             cov[r][c] = s2[idx[r][c]] - sum[r] * sum[c] * inv;
     }
+    if (end - start <= 3 && normal_frame(rec, start, end, e)) return n;
     double vec[3][3];
     jacobi3(cov, vec);
     int order[3] = {0, 1, 2};

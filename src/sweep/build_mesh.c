@@ -284,8 +284,8 @@ static void bounding_triangle(const tri_rec *rec, size_t start, size_t end, doub
     for (size_t i = 0; i < n; i++) {
         const double *p = pts + 3 * i;
         for (int a = 0; a < 3; a++) {
-            double x =
-                (p[0] - mean[0]) * e[a][0] + (p[1] - mean[1]) * e[a][1] + (p[2] - mean[2]) * e[a][2];
+            double x = (p[0] - mean[0]) * e[a][0] + (p[1] - mean[1]) * e[a][1] +
+                       (p[2] - mean[2]) * e[a][2];
             if (a < 2) uv[2 * i + a] = x;
             lo[a] = x < lo[a] ? x : lo[a]; /* not fmin/fmax: libm calls, and x is finite */
             hi[a] = x > hi[a] ? x : hi[a];
@@ -457,7 +457,8 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
             tri_rec *r = rec + t;
             r->id = (uint32_t)t;
             for (int k = 0; k < 3; k++)
-                memcpy(r->c + 3 * k, mesh->xyz + 3 * (size_t)mesh->tri[3 * t + k], 3 * sizeof *r->c);
+                memcpy(r->c + 3 * k, mesh->xyz + 3 * (size_t)mesh->tri[3 * t + k],
+                       3 * sizeof *r->c);
             for (int c = 0; c < 3; c++)
                 r->centroid[c] = (r->c[c] + r->c[3 + c] + r->c[6 + c]) / 3;
         }

@@ -202,7 +202,8 @@ static int advance(fl_sweep_cursor *cur, const double *q3, search *st)
     for (int c = 0; c < 3; c++)
         d2 += (q3[c] - cur->q[c]) * (q3[c] - cur->q[c]);
     int reset = !cur->started || sqrt(d2) > cur->last_distance ||
-                cur->last_cost > cur->reset_cost || cur->h.n + cur->back_n > 8 * cur->reset_cost + 64;
+                cur->last_cost > cur->reset_cost ||
+                cur->h.n + cur->back_n > 8 * cur->reset_cost + 64;
     cur->travelled = reset ? 0 : cur->travelled + sqrt(d2) + shape_motion(cur) + st->slack;
     cur->moved_seen = cur->s->moved;
     cur->updates_seen = cur->s->updates;

@@ -21,8 +21,9 @@ static double uniform(double lo, double hi)
  * node's sample rarely holds a spike, so its ε has to come from measuring every vertex. */
 static fl_mesh spiky_grid(int n)
 {
-    fl_mesh m = {(size_t)n * n, malloc(3 * (size_t)n * n * sizeof(double)),
-                 2 * (size_t)(n - 1) * (n - 1), malloc(6 * (size_t)(n - 1) * (n - 1) * sizeof(uint32_t))};
+    size_t nt = 2 * (size_t)(n - 1) * (n - 1);
+    fl_mesh m = {(size_t)n * n, malloc(3 * (size_t)n * n * sizeof(double)), nt,
+                 malloc(3 * nt * sizeof(uint32_t))};
     for (int i = 0; i < n; i++)
         for (int j = 0; j < n; j++) {
             size_t v = (size_t)i * n + j;

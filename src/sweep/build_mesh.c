@@ -14,9 +14,18 @@
 #include "sweep/sweep_internal.h"
 
 typedef struct range {
-    size_t start, end; /* triangles perm[start..end) */
+    size_t start, end; /* triangles rec[start..end) */
     uint32_t node;
 } range;
+
+/* A triangle during the build: its corners and centroid inline, so that the median splits
+ * move the records themselves and every pass over a node's triangles streams through memory
+ * (an index array into the mesh made the build wait on cache misses, issue #9). */
+typedef struct tri_rec {
+    double c[9];
+    double centroid[3];
+    uint32_t id;
+} tri_rec;
 
 /* Eigenvectors (columns of vec) of the symmetric 3x3 matrix a by cyclic Jacobi rotations;
  * the eigenvalues are left on a's diagonal. */
@@ -54,57 +63,88 @@ static void jacobi3(double a[3][3], double vec[3][3])
     }
 }
 
-/* The principal frame of the vertices of triangles perm[start..end): mean and axes e[0], e[1]
- * (largest spread first) and the normal e[2]. */
-static void principal_frame(const fl_mesh *m, const uint32_t *perm, size_t start, size_t end,
-                            double *mean, double e[3][3])
+/* A frame for a node of a few triangles without the eigen-solve: the normal is their summed
+ * (area-weighted) normal, e[0] the first triangle's first edge in that plane. Near the leaves
+ * this fixed cost per node dominated the build (issue #9). Returns 0 when the triangles are
+ * too degenerate or large for it; the caller then fits the principal frame. */
+static int normal_frame(const tri_rec *rec, size_t start, size_t end, double e[3][3])
 {
-    double sum[3] = {0, 0, 0}, cov[3][3] = {{0}};
-    size_t count = 3 * (end - start);
-    for (size_t i = start; i < end; i++)
-        for (int k = 0; k < 3; k++)
-            for (int c = 0; c < 3; c++)
-                sum[c] += m->xyz[3 * (size_t)m->tri[3 * (size_t)perm[i] + k] + c];
-    for (int c = 0; c < 3; c++)
-        mean[c] = sum[c] / (double)count;
-    for (size_t i = start; i < end; i++)
-        for (int k = 0; k < 3; k++) {
-            const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
-            for (int r = 0; r < 3; r++)
-                for (int c = 0; c < 3; c++)
-                    cov[r][c] += (p[r] - mean[r]) * (p[c] - mean[c]);
+    double nrm[3] = {0, 0, 0};
+    for (size_t i = start; i < end; i++) {
+        const double *c = rec[i].c;
+        double a[3] = {c[3] - c[0], c[4] - c[1], c[5] - c[2]};
+        double b[3] = {c[6] - c[0], c[7] - c[1], c[8] - c[2]};
+        nrm[0] += a[1] * b[2] - a[2] * b[1];
+        nrm[1] += a[2] * b[0] - a[0] * b[2];
+        nrm[2] += a[0] * b[1] - a[1] * b[0];
+    }
+    double len = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    if (!(len > 0) || !isfinite(len)) return 0;
+    const double *c = rec[start].c;
+    double d[3] = {c[3] - c[0], c[4] - c[1], c[5] - c[2]}, h = 0, u2 = 0, d2 = 0;
+    for (int k = 0; k < 3; k++) {
+        e[2][k] = nrm[k] / len;
+        h += d[k] * e[2][k];
+    }
+    for (int k = 0; k < 3; k++) {
+        d2 += d[k] * d[k];
+        d[k] -= h * e[2][k];
+        u2 += d[k] * d[k];
+    }
+    if (!(u2 > 1e-12 * d2) || !isfinite(d2)) return 0;
+    double inv = 1 / sqrt(u2);
+    for (int k = 0; k < 3; k++)
+        e[0][k] = d[k] * inv;
+    e[1][0] = e[2][1] * e[0][2] - e[2][2] * e[0][1];
+    e[1][1] = e[2][2] * e[0][0] - e[2][0] * e[0][2];
+    e[1][2] = e[2][0] * e[0][1] - e[2][1] * e[0][0];
+    return 1;
+}
+
+/* Gathers the corners of every stride-th triangle of rec[start..end) into pts (9 doubles a
+ * triangle, so the passes below stream through memory) and returns the principal frame of
+ * these points (their count is returned): mean
+ * and axes e[0], e[1] (largest spread first) and the normal e[2]. One pass: moments about the
+ * first point (shifted, so that a mesh far from the origin does not cancel the covariance);
+ * the frame only shapes the element, whose radius is measured afterwards. */
+static size_t gather_frame(const tri_rec *rec, size_t start, size_t end, size_t stride, double *pts,
+                           double *mean, double e[3][3])
+{
+    const double *ref = rec[start].c;
+    double sum[3] = {0, 0, 0}, s2[6] = {0, 0, 0, 0, 0, 0};
+    size_t n = 0;
+    for (size_t i = start; i < end; i += stride) {
+        const double *t = rec[i].c;
+        for (int k = 0; k < 3; k++, n++) {
+            double x = t[3 * k] - ref[0], y = t[3 * k + 1] - ref[1], z = t[3 * k + 2] - ref[2];
+            pts[3 * n] = t[3 * k], pts[3 * n + 1] = t[3 * k + 1], pts[3 * n + 2] = t[3 * k + 2];
+            sum[0] += x, sum[1] += y, sum[2] += z;
+            s2[0] += x * x, s2[1] += x * y, s2[2] += x * z;
+            s2[3] += y * y, s2[4] += y * z, s2[5] += z * z;
         }
+    }
+    double inv = 1 / (double)n, cov[3][3];
+    static const int idx[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+    for (int r = 0; r < 3; r++) {
+        mean[r] = ref[r] + sum[r] * inv;
+        for (int c = 0; c < 3; c++)
+            cov[r][c] = s2[idx[r][c]] - sum[r] * sum[c] * inv;
+    }
+    if (end - start <= 3 && normal_frame(rec, start, end, e)) return n;
     double vec[3][3];
     jacobi3(cov, vec);
     int order[3] = {0, 1, 2};
     for (int i = 0; i < 3; i++) /* sort eigenvalues decreasing */
         for (int j = i + 1; j < 3; j++)
             if (cov[order[j]][order[j]] > cov[order[i]][order[i]]) {
-                int t = order[i];
+                int tmp = order[i];
                 order[i] = order[j];
-                order[j] = t;
+                order[j] = tmp;
             }
     for (int i = 0; i < 3; i++)
         for (int c = 0; c < 3; c++)
             e[i][c] = vec[c][order[i]];
-}
-
-/* The node's vertex nearest to the mean of its vertices: a point of the shape inside the
- * element, whose distance bounds the distance to the node's triangles from above. */
-static void representative(const fl_mesh *m, const uint32_t *perm, size_t start, size_t end,
-                           const double *mean, double *rep)
-{
-    double best = INFINITY;
-    for (size_t i = start; i < end; i++)
-        for (int k = 0; k < 3; k++) {
-            const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
-            double d = (p[0] - mean[0]) * (p[0] - mean[0]) + (p[1] - mean[1]) * (p[1] - mean[1]) +
-                       (p[2] - mean[2]) * (p[2] - mean[2]);
-            if (d < best) {
-                best = d;
-                rep[0] = p[0], rep[1] = p[1], rep[2] = p[2];
-            }
-        }
+    return n;
 }
 
 /* A triangle enclosing the 2D points uv[0..n): over the four sides of their bounding box as
@@ -221,27 +261,36 @@ static double tri_dist2(const tri_frame *f, const double *v, const double *p)
     return fl_sweep_triangle_closest(p, v, v + 3, v + 6, bary, closest);
 }
 
+/* Triangles of a node that shape its bounding triangle (below). */
+#define FL_SWEEP_SAMPLE 128
+
 /* The bounding element of a node: a triangle in the principal plane of the node's vertices
  * (at the mid-plane of their spread along the normal) enclosing their projections, and ε =
- * the farthest vertex from it. uv is scratch room for 6 doubles a triangle. */
-static void bounding_triangle(const fl_mesh *m, const uint32_t *perm, size_t start, size_t end,
-                              double scale, double *uv, fl_sweep_node *node)
+ * the farthest vertex from it. Large nodes shape the triangle on a sample of at most
+ * FL_SWEEP_SAMPLE of their triangles (every k-th in the median-split order, so spread over
+ * the node): ε is measured on EVERY vertex afterwards, so the element contains the node
+ * whatever the sample; a vertex the sample misses only widens ε. This turns the build's
+ * several passes over every vertex per tree level into one (issue #9: build ≤ 2× CGAL).
+ * Also rep, the vertex nearest to the sample's mean: a point of the shape inside the element,
+ * whose distance bounds the distance to the node's triangles from above (query.c). pts and uv
+ * are scratch room for 9 and 6 doubles a sampled triangle. */
+static void bounding_triangle(const tri_rec *rec, size_t start, size_t end, double scale,
+                              double *pts, double *uv, fl_sweep_node *node)
 {
     double mean[3], e[3][3], lo[3] = {INFINITY, INFINITY, INFINITY};
     double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    principal_frame(m, perm, start, end, mean, e);
-    size_t n = 0;
-    for (size_t i = start; i < end; i++)
-        for (int k = 0; k < 3; k++, n++) {
-            const double *p = m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k];
-            for (int a = 0; a < 3; a++) {
-                double x = (p[0] - mean[0]) * e[a][0] + (p[1] - mean[1]) * e[a][1] +
-                           (p[2] - mean[2]) * e[a][2];
-                if (a < 2) uv[2 * n + a] = x;
-                lo[a] = x < lo[a] ? x : lo[a]; /* not fmin/fmax: libm calls, and x is finite */
-                hi[a] = x > hi[a] ? x : hi[a];
-            }
+    size_t stride = (end - start + FL_SWEEP_SAMPLE - 1) / FL_SWEEP_SAMPLE;
+    size_t n = gather_frame(rec, start, end, stride, pts, mean, e);
+    for (size_t i = 0; i < n; i++) {
+        const double *p = pts + 3 * i;
+        for (int a = 0; a < 3; a++) {
+            double x = (p[0] - mean[0]) * e[a][0] + (p[1] - mean[1]) * e[a][1] +
+                       (p[2] - mean[2]) * e[a][2];
+            if (a < 2) uv[2 * i + a] = x;
+            lo[a] = x < lo[a] ? x : lo[a]; /* not fmin/fmax: libm calls, and x is finite */
+            hi[a] = x > hi[a] ? x : hi[a];
         }
+    }
     double corner[3][2], mid_n = (lo[2] + hi[2]) / 2;
     enclosing_triangle(uv, n, lo, hi, corner);
     for (int k = 0; k < 3; k++)
@@ -250,36 +299,42 @@ static void bounding_triangle(const fl_mesh *m, const uint32_t *perm, size_t sta
                 mean[c] + corner[k][0] * e[0][c] + corner[k][1] * e[1][c] + mid_n * e[2][c];
     /* Measured against the stored triangle, not derived from the frame, so rounding in the
      * frame cannot shrink it. */
-    double eps2 = 0;
+    double eps2 = 0, best = INFINITY;
     tri_frame f;
     tri_frame_init(&f, node->v);
-    for (size_t i = start; i < end; i++)
+    for (size_t i = start; i < end; i++) {
         for (int k = 0; k < 3; k++) {
-            double d2 = tri_dist2(&f, node->v, m->xyz + 3 * (size_t)m->tri[3 * (size_t)perm[i] + k]);
+            const double *p = rec[i].c + 3 * k;
+            double d2 = tri_dist2(&f, node->v, p);
             eps2 = d2 > eps2 ? d2 : eps2;
+            double r2 = (p[0] - mean[0]) * (p[0] - mean[0]) +
+                        (p[1] - mean[1]) * (p[1] - mean[1]) + (p[2] - mean[2]) * (p[2] - mean[2]);
+            if (r2 < best) {
+                best = r2;
+                node->rep[0] = p[0], node->rep[1] = p[1], node->rep[2] = p[2];
+            }
         }
+    }
     node->eps = fl_sweep_widen(sqrt(eps2), scale);
-    representative(m, perm, start, end, mean, node->rep);
 }
 
-/* Reorders perm[start..end) so that perm[mid] has the median key and smaller keys precede
- * it (Hoare quickselect on the centroid coordinate `axis`). */
-static void select_median(uint32_t *perm, const double *centroid, int axis, size_t start,
-                          size_t mid, size_t end)
+/* Reorders rec[start..end) so that rec[mid] has the median centroid coordinate `axis` and
+ * smaller ones precede it (Hoare quickselect). */
+static void select_median(tri_rec *rec, int axis, size_t start, size_t mid, size_t end)
 {
     size_t lo = start, hi = end - 1;
     while (lo < hi) {
-        double pivot = centroid[3 * (size_t)perm[lo + (hi - lo) / 2] + axis];
+        double pivot = rec[lo + (hi - lo) / 2].centroid[axis];
         size_t i = lo, j = hi;
         while (i <= j) {
-            while (centroid[3 * (size_t)perm[i] + axis] < pivot)
+            while (rec[i].centroid[axis] < pivot)
                 i++;
-            while (centroid[3 * (size_t)perm[j] + axis] > pivot)
+            while (rec[j].centroid[axis] > pivot)
                 j--;
             if (i <= j) {
-                uint32_t t = perm[i];
-                perm[i] = perm[j];
-                perm[j] = t;
+                tri_rec tmp = rec[i];
+                rec[i] = rec[j];
+                rec[j] = tmp;
                 i++;
                 if (j == 0) break;
                 j--;
@@ -294,12 +349,12 @@ static void select_median(uint32_t *perm, const double *centroid, int axis, size
     }
 }
 
-static int widest_axis(const uint32_t *perm, const double *centroid, size_t start, size_t end)
+static int widest_axis(const tri_rec *rec, size_t start, size_t end)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = start; i < end; i++)
         for (int c = 0; c < 3; c++) {
-            double x = centroid[3 * (size_t)perm[i] + c];
+            double x = rec[i].centroid[c];
             lo[c] = x < lo[c] ? x : lo[c];
             hi[c] = x > hi[c] ? x : hi[c];
         }
@@ -309,14 +364,12 @@ static int widest_axis(const uint32_t *perm, const double *centroid, size_t star
     return axis;
 }
 
-static void set_leaf(const fl_mesh *m, uint32_t t, fl_sweep_node *node)
+static void set_leaf(const tri_rec *rec, fl_sweep_node *node)
 {
-    for (int k = 0; k < 3; k++)
-        for (int c = 0; c < 3; c++)
-            node->v[3 * k + c] = m->xyz[3 * (size_t)m->tri[3 * (size_t)t + k] + c];
+    memcpy(node->v, rec->c, 9 * sizeof *node->v);
     node->eps = 0;
     node->child[0] = node->child[1] = FL_SWEEP_LEAF;
-    node->element = t;
+    node->element = rec->id;
 }
 
 static fl_status check_mesh(const fl_mesh *m, fl_error *err)
@@ -342,36 +395,33 @@ static fl_status check_mesh(const fl_mesh *m, fl_error *err)
 }
 
 /* Splits triangle ranges top-down; nodes are numbered in creation order, root first. */
-static fl_status split_ranges(fl_sweep *s, const fl_mesh *m, uint32_t *perm, const double *centroid,
-                              const fl_sweep_options *opt, fl_error *err)
+static fl_status split_ranges(fl_sweep *s, tri_rec *rec, const fl_sweep_options *opt,
+                              fl_error *err)
 {
     range *stack = fl_alloc_array(s->node_count, sizeof *stack);
-    double *uv = fl_alloc_array(s->elements, 6 * sizeof *uv);
-    if (!stack || !uv) {
-        free(stack);
-        free(uv);
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
-    }
+    double *uv = fl_alloc_array(FL_SWEEP_SAMPLE, 6 * sizeof *uv);
+    double *pts = fl_alloc_array(FL_SWEEP_SAMPLE, 9 * sizeof *pts);
+    fl_status st = FL_OK;
+    if (!stack || !uv || !pts)
+        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
     size_t top = 0, next = 1, done = 0;
-    stack[top++] = (range){0, s->elements, 0};
+    if (st == FL_OK) stack[top++] = (range){0, s->elements, 0};
     while (top > 0) {
         range r = stack[--top];
         fl_sweep_node *node = s->nodes + r.node;
         if (r.end - r.start == 1) {
-            set_leaf(m, perm[r.start], node);
+            set_leaf(rec + r.start, node);
             if ((++done & 0xffff) == 0 && opt &&
                 fl_progress(opt->progress, opt->progress_user, "sweep hierarchy",
                             (double)done / (double)s->elements)) {
-                free(stack);
-                free(uv);
-                return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+                st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+                break;
             }
             continue;
         }
-        bounding_triangle(m, perm, r.start, r.end, s->scale, uv, node);
+        bounding_triangle(rec, r.start, r.end, s->scale, pts, uv, node);
         size_t mid = r.start + (r.end - r.start) / 2;
-        select_median(perm, centroid, widest_axis(perm, centroid, r.start, r.end), r.start, mid,
-                      r.end);
+        select_median(rec, widest_axis(rec, r.start, r.end), r.start, mid, r.end);
         node->element = FL_SWEEP_LEAF;
         node->child[0] = (uint32_t)next;
         node->child[1] = (uint32_t)(next + 1);
@@ -381,7 +431,8 @@ static fl_status split_ranges(fl_sweep *s, const fl_mesh *m, uint32_t *perm, con
     }
     free(stack);
     free(uv);
-    return FL_OK;
+    free(pts);
+    return st;
 }
 
 fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sweep **out,
@@ -392,10 +443,9 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
     fl_status st = check_mesh(mesh, err);
     if (st != FL_OK) return st;
     size_t n = mesh->triangle_count;
-    uint32_t *perm = fl_alloc_array(n, sizeof *perm);
-    double *centroid = fl_alloc_array(n, 3 * sizeof *centroid);
+    tri_rec *rec = fl_alloc_array(n, sizeof *rec);
     fl_sweep *s = NULL;
-    if (!perm || !centroid) {
+    if (!rec) {
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
     } else {
         st = fl_sweep_alloc(3, 1, n, &s, err);
@@ -404,15 +454,15 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
         for (size_t v = 0; v < 3 * mesh->vertex_count; v++)
             s->scale = fmax(s->scale, fabs(mesh->xyz[v]));
         for (size_t t = 0; t < n; t++) {
-            perm[t] = (uint32_t)t;
-            for (int c = 0; c < 3; c++) {
-                double sum = 0;
-                for (int k = 0; k < 3; k++)
-                    sum += mesh->xyz[3 * (size_t)mesh->tri[3 * t + k] + c];
-                centroid[3 * t + c] = sum / 3;
-            }
+            tri_rec *r = rec + t;
+            r->id = (uint32_t)t;
+            for (int k = 0; k < 3; k++)
+                memcpy(r->c + 3 * k, mesh->xyz + 3 * (size_t)mesh->tri[3 * t + k],
+                       3 * sizeof *r->c);
+            for (int c = 0; c < 3; c++)
+                r->centroid[c] = (r->c[c] + r->c[3 + c] + r->c[6 + c]) / 3;
         }
-        st = split_ranges(s, mesh, perm, centroid, opt, err);
+        st = split_ranges(s, rec, opt, err);
     }
     if (st == FL_OK) { /* the topology, for fl_sweep_update_vertices */
         s->tri = fl_alloc_array(n, 3 * sizeof *s->tri);
@@ -422,12 +472,12 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
         else
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
     }
-    free(perm);
-    free(centroid);
+    free(rec);
     if (st != FL_OK) {
         fl_sweep_free(s);
         return st;
     }
+    fl_sweep_compute_boxes(s);
     *out = s;
     return FL_OK;
 }

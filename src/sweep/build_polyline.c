@@ -131,6 +131,7 @@ fl_status fl_sweep_polyline_build(const double *points, size_t n, int dim, int c
         fl_sweep_free(s);
         return st;
     }
+    fl_sweep_compute_boxes(s);
     *out = s;
     return FL_OK;
 }

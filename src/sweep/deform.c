@@ -346,6 +346,7 @@ fl_status fl_sweep_update_vertices(fl_sweep *sweep, const double *xyz, fl_error 
                 node->v[3 * k + c] = leaf_new_corner(sweep, node, xyz, k)[c];
     }
     free(m);
+    if (sweep->box) fl_sweep_compute_boxes(sweep); /* in place: the array is already there */
     /* §5.2: cursors widen their kept intervals by the largest displacement (query.c). */
     sweep->moved += fl_sweep_widen(largest, scale);
     sweep->updates++;

@@ -20,6 +20,11 @@ static void sub3(const double *a, const double *b, double *out)
     out[2] = a[2] - b[2];
 }
 
+static double max2(double a, double b)
+{
+    return a > b ? a : b; /* not fmax: a libm call in this hot loop; inputs are finite */
+}
+
 static double dist2(const double *a, const double *b)
 {
     double d[3];
@@ -48,13 +53,15 @@ double fl_sweep_segment_closest(const double *p, const double *a, const double *
     return dist2(p, closest);
 }
 
-/* The nearest of the three edges: the answer for degenerate triangles, whose face region is
- * empty, and a safe fallback when the face-region barycentrics are ill-conditioned. */
-static double triangle_edges_closest(const double *p, const double *v[3], double *bary,
+/* The nearest of the edges in `mask` (bit e: edge v[e] v[e+1]): all three for degenerate
+ * triangles, whose face region is empty, and as a safe fallback when the face-region
+ * barycentrics are ill-conditioned. */
+static double triangle_edges_closest(const double *p, const double *v[3], int mask, double *bary,
                                      double *closest)
 {
     double best = INFINITY;
     for (int e = 0; e < 3; e++) {
+        if (!(mask >> e & 1)) continue;
         double t, c[3];
         double d = fl_sweep_segment_closest(p, v[e], v[(e + 1) % 3], &t, c);
         if (d < best) {
@@ -94,8 +101,8 @@ double fl_sweep_triangle_closest(const double *p, const double *a, const double 
      * of two (exact) so that they are near 1; `closest` below uses the unscaled points. */
     double m = 0;
     for (int i = 0; i < 3; i++)
-        m = fmax(m, fmax(fmax(fabs(ab[i]), fabs(ac[i])), fmax(fabs(ap[i]), fmax(fabs(bp[i]),
-                                                                                  fabs(cp[i])))));
+        m = max2(m, max2(max2(fabs(ab[i]), fabs(ac[i])),
+                         max2(fabs(ap[i]), max2(fabs(bp[i]), fabs(cp[i])))));
     if (m > 0x1p60 || (m > 0 && m < 0x1p-60)) {
         double f = ldexp(1.0, -ilogb(m));
         for (int i = 0; i < 3; i++)
@@ -121,15 +128,21 @@ double fl_sweep_triangle_closest(const double *p, const double *a, const double 
      * of the longest edge, the same tolerance as before. */
     double bc2 = 0;
     for (int i = 0; i < 3; i++) bc2 += (ac[i] - ab[i]) * (ac[i] - ab[i]);
-    double l2 = fmax(fmax(ab2, ac2), bc2);
+    double l2 = max2(max2(ab2, ac2), bc2);
     /* Outside the face's prism (some barycentric of the projection is negative) the nearest
      * point is on the boundary. A degenerate triangle (sin of its angle at a below 1e-12) also
      * goes there: its face solve would divide by (nearly) zero, and its face lies within
      * 1e-12 |ab| of its edges. Between that and well-shaped triangles the face solve loses
      * accuracy like 1/sin^2 (docs/sweep.md). */
-    if (!(cross2 > 1e-24 * ab2 * ac2) || !(cross2 > 1e-24 * l2 * l2) || !(denom > 0) || va < 0 ||
-        vb < 0 || vc < 0)
-        return triangle_edges_closest(p, v, bary, closest);
+    if (!(cross2 > 1e-24 * ab2 * ac2) || !(cross2 > 1e-24 * l2 * l2) || !(denom > 0))
+        return triangle_edges_closest(p, v, 7, bary, closest);
+    /* Outside a proper triangle the nearest point lies on an edge whose line separates the
+     * projection from the triangle, i.e. one opposite a negative coordinate (va: edge bc,
+     * vb: edge ca, vc: edge ab). A coordinate misjudged by rounding is within rounding of 0,
+     * where either choice gives the same distance to rounding. */
+    if (va < 0 || vb < 0 || vc < 0)
+        return triangle_edges_closest(p, v, (vc < 0) | (va < 0) << 1 | (vb < 0) << 2, bary,
+                                      closest);
     double s = vb / denom, t = vc / denom;
     set_bary(bary, 1 - s - t, s, t);
     for (int i = 0; i < 3; i++)
@@ -182,6 +195,7 @@ void fl_sweep_free(fl_sweep *sweep)
 {
     if (!sweep) return;
     free(sweep->nodes);
+    free(sweep->box);
     free(sweep->tri);
     free(sweep);
 }

@@ -16,7 +16,7 @@ static void sweep_ordered(const fl_sweep *s, fl_sweep_heap *h, const double *q3,
 {
     double slack = fl_sweep_query_slack(s, q3), bary[3], c[3];
     h->n = 0;
-    fl_sweep_heap_push(h, (fl_sweep_entry){-INFINITY, 0, 0});
+    fl_sweep_heap_push(h, (fl_sweep_entry){-INFINITY, 0, 0, 0});
     while (h->n > 0) {
         fl_sweep_entry top = fl_sweep_heap_pop(h);
         const fl_sweep_node *node = s->nodes + top.node;
@@ -28,7 +28,7 @@ static void sweep_ordered(const fl_sweep *s, fl_sweep_heap *h, const double *q3,
             const fl_sweep_node *child = s->nodes + node->child[k];
             double d = fl_sweep_node_distance(s, child, q3, bary, c);
             double lo = fl_sweep_is_leaf(child) ? d : d - child->eps - slack;
-            if (lo <= radius) fl_sweep_heap_push(h, (fl_sweep_entry){lo, 0, node->child[k]});
+            if (lo <= radius) fl_sweep_heap_push(h, (fl_sweep_entry){lo, 0, node->child[k], 0});
         }
     }
 }

@@ -34,6 +34,14 @@ struct fl_sweep_cursor {
     double center[3];
     double radius;
     uint32_t leaf; /* the node that is closest anywhere inside the ball */
+    uint32_t last_leaf; /* the last exact answer's leaf, or FL_SWEEP_LEAF */
+    /* Entries queued beyond the current query's best upper bound wait unsorted at the end of
+     * the heap's array (e[node_count - 1 - i], i < back_n), out of the heap's way: a query
+     * from the root queues most of the hierarchy there and never needs it, yet the queue stays
+     * a cut for §5.1. back_min is their smallest key; they join the heap before it could
+     * matter (pending). */
+    size_t back_n;
+    double back_min;
     double moved_seen;     /* s->moved and s->updates when the queue was last brought up */
     uint64_t updates_seen; /* to date with the shape's motion (§5.2, §5.3) */
 };
@@ -71,26 +79,69 @@ static double upper_bound(const fl_sweep *s, const fl_sweep_node *node, const do
     return sqrt(r2) + slack;
 }
 
-/* Computes a region's interval at the current query and queues it (clean). */
-static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t id)
+/* Queues an entry: into the heap if it may hold this query's answer, else at the back. With
+ * `replace`, the entry takes the place of the heap's front (which the caller has consumed). */
+static void enqueue(fl_sweep_cursor *cur, const search *st, fl_sweep_entry e, int replace)
+{
+    if (e.key - cur->travelled <= st->upper) {
+        if (replace)
+            fl_sweep_heap_replace_top(&cur->h, e);
+        else
+            fl_sweep_heap_push(&cur->h, e);
+        return;
+    }
+    if (replace) fl_sweep_heap_pop(&cur->h);
+    cur->h.e[cur->s->node_count - 1 - cur->back_n++] = e;
+    if (e.key < cur->back_min) cur->back_min = e.key;
+}
+
+/* Moves the back into the heap when its smallest key could reach the front. */
+static void pending(fl_sweep_cursor *cur)
+{
+    if (cur->back_n == 0 || (cur->h.n > 0 && cur->h.e[0].key < cur->back_min)) return;
+    size_t end = cur->s->node_count;
+    for (size_t i = 0; i < cur->back_n; i++)
+        fl_sweep_heap_push(&cur->h, cur->h.e[end - 1 - i]);
+    cur->back_n = 0;
+    cur->back_min = INFINITY;
+}
+
+/* Computes a region's interval at the current query and queues it (clean). With boxes
+ * (boxes.c) the box distance comes first: a region whose box is already beyond the best upper
+ * bound cannot hold this query's answer, so it is queued on its box bound alone ("partial")
+ * and its element is measured only if it ever reaches the front. `full` forces the element;
+ * `replace`: the result takes the place of the heap's front (a pop and a push in one). */
+static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t id, int full,
+                  int replace)
 {
     const fl_sweep *s = cur->s;
     const fl_sweep_node *node = s->nodes + id;
+    /* The key lo + travelled, and its difference with a later travelled, round at the scale
+     * of the travelled distance: widen for that too. */
+    double widen = st->slack + 16 * DBL_EPSILON * cur->travelled;
+    double box_lo = -INFINITY;
+    if (s->box) {
+        box_lo = sqrt(fl_sweep_box_dist2(s->box + 6 * (size_t)id, q3)) - widen;
+        if (!full && box_lo > st->upper) {
+            enqueue(cur, st, (fl_sweep_entry){box_lo + cur->travelled, cur->travelled, id, 1},
+                    replace);
+            return;
+        }
+    }
     double bary[3], c[3];
     double d = fl_sweep_node_distance(s, node, q3, bary, c);
     st->visited++;
     double lo = d, hi = d;
     if (!fl_sweep_is_leaf(node)) {
-        /* The key lo + travelled, and its difference with a later travelled, round at
-         * the scale of the travelled distance: widen for that too. */
-        lo = d - node->eps - st->slack - 16 * DBL_EPSILON * cur->travelled;
+        lo = d - node->eps - widen;
+        lo = lo > box_lo ? lo : box_lo;
         hi = upper_bound(s, node, q3, d, st->slack);
     } else if (d < st->best_leaf_d) {
         st->best_leaf_d = d;
         st->best_leaf = id;
     }
     if (hi < st->upper) st->upper = hi;
-    fl_sweep_heap_push(&cur->h, (fl_sweep_entry){lo + cur->travelled, cur->travelled, id});
+    enqueue(cur, st, (fl_sweep_entry){lo + cur->travelled, cur->travelled, id, 0}, replace);
 }
 
 /* The current lower bound of a queued region (§5.1: widened by the moves since its base). */
@@ -107,6 +158,7 @@ static void set_ball(fl_sweep_cursor *cur, const search *st, const double *q3, u
     double second = INFINITY;
     for (size_t i = 1; i <= 2 && i < cur->h.n; i++)
         second = fmin(second, current_lower(cur, cur->h.e + i));
+    if (cur->back_n > 0) second = fmin(second, cur->back_min - cur->travelled);
     double r = (second - d) / 2 - st->slack;
     cur->have_ball = r > 0;
     cur->radius = r;
@@ -144,23 +196,64 @@ static double shape_motion(const fl_sweep_cursor *cur)
  * kept queue is unlikely to pay: the query jumped farther than the last distance (so most of
  * the queue would be dirty), the last query cost more than one from the root, or the queue
  * has grown far beyond what a query from the root needs. Otherwise accounts the move (§5.1). */
-static void advance(fl_sweep_cursor *cur, const double *q3, search *st)
+static int advance(fl_sweep_cursor *cur, const double *q3, search *st)
 {
     double d2 = 0;
     for (int c = 0; c < 3; c++)
         d2 += (q3[c] - cur->q[c]) * (q3[c] - cur->q[c]);
     int reset = !cur->started || sqrt(d2) > cur->last_distance ||
-                cur->last_cost > cur->reset_cost || cur->h.n > 8 * cur->reset_cost + 64;
+                cur->last_cost > cur->reset_cost ||
+                cur->h.n + cur->back_n > 8 * cur->reset_cost + 64;
     cur->travelled = reset ? 0 : cur->travelled + sqrt(d2) + shape_motion(cur) + st->slack;
     cur->moved_seen = cur->s->moved;
     cur->updates_seen = cur->s->updates;
     for (int c = 0; c < 3; c++)
         cur->q[c] = q3[c];
-    if (!reset) return;
+    if (!reset) return 0;
     cur->h.n = 0;
+    cur->back_n = 0;
+    cur->back_min = INFINITY;
     cur->started = 1;
     cur->reset_cost = SIZE_MAX;
-    visit(cur, st, q3, 0);
+    visit(cur, st, q3, 0, 1, 0);
+    return 1;
+}
+
+/* A first upper bound for a query on the kept queue (§5.1): the distance to the last answer's
+ * element, near for a coherent walk. Every dirty region whose box is beyond it then costs a box
+ * distance instead of an element solve when it comes to the front. */
+static void seed_upper(fl_sweep_cursor *cur, search *st, const double *q3)
+{
+    if (cur->last_leaf == FL_SWEEP_LEAF) return;
+    double bary[3], c[3];
+    double d = fl_sweep_node_distance(cur->s, cur->s->nodes + cur->last_leaf, q3, bary, c);
+    st->visited++;
+    st->upper = d + st->slack;
+    st->best_leaf = cur->last_leaf;
+    st->best_leaf_d = d;
+}
+
+/* A first upper bound for a query from the root: follow the nearer box down to one leaf (a
+ * few box distances) and take that element's distance, so that from the first split on every
+ * region whose box lies beyond it is queued without an element solve (issue #9; the role of
+ * CGAL's closest-vertex hint, without a separate search structure). */
+static void seed_descent(fl_sweep_cursor *cur, search *st, const double *q3)
+{
+    const fl_sweep *s = cur->s;
+    if (!s->box) return;
+    uint32_t id = 0;
+    while (!fl_sweep_is_leaf(s->nodes + id)) {
+        uint32_t a = s->nodes[id].child[0], b = s->nodes[id].child[1];
+        double da = fl_sweep_box_dist2(s->box + 6 * (size_t)a, q3);
+        double db = fl_sweep_box_dist2(s->box + 6 * (size_t)b, q3);
+        id = db < da ? b : a;
+    }
+    double bary[3], c[3];
+    double d = fl_sweep_node_distance(s, s->nodes + id, q3, bary, c);
+    st->visited++;
+    if (d + st->slack < st->upper) st->upper = d + st->slack;
+    st->best_leaf = id;
+    st->best_leaf_d = d;
 }
 
 /* The priority process (§3.2) on the kept queue: refresh dirty fronts, split clean internal
@@ -172,27 +265,30 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
     search st = {INFINITY, FL_SWEEP_LEAF, INFINITY, fl_sweep_query_slack(s, q3), 0};
     fl_sweep_heap *h = &cur->h;
     cur->have_ball = 0;
-    advance(cur, q3, &st);
+    if (advance(cur, q3, &st))
+        seed_descent(cur, &st, q3);
+    else
+        seed_upper(cur, &st, q3);
     for (;;) {
+        pending(cur);
         fl_sweep_entry top = h->e[0];
         const fl_sweep_node *node = s->nodes + top.node;
-        if (top.base != cur->travelled) {
-            fl_sweep_heap_pop(h);
-            visit(cur, &st, q3, top.node);
+        if (top.base != cur->travelled || top.partial) {
+            visit(cur, &st, q3, top.node, top.base == cur->travelled, 1);
             continue;
         }
         if (fl_sweep_is_leaf(node)) {
             fill_leaf(s, top.node, q3, r);
             set_ball(cur, &st, q3, top.node, r->distance);
+            cur->last_leaf = top.node;
             break;
         }
         if (tol > 0 && st.upper - current_lower(cur, &top) <= tol) {
             approximate(s, &st, current_lower(cur, &top), q3, r);
             break;
         }
-        fl_sweep_heap_pop(h);
-        visit(cur, &st, q3, node->child[0]);
-        visit(cur, &st, q3, node->child[1]);
+        visit(cur, &st, q3, node->child[0], 0, 1);
+        visit(cur, &st, q3, node->child[1], 0, 0);
     }
     if (cur->reset_cost == SIZE_MAX) cur->reset_cost = st.visited;
     cur->last_cost = st.visited;
@@ -215,6 +311,7 @@ fl_status fl_sweep_cursor_new(const fl_sweep *sweep, fl_sweep_cursor **out, fl_e
     }
     cur->s = sweep;
     cur->h.e = e;
+    cur->last_leaf = FL_SWEEP_LEAF;
     *out = cur;
     return FL_OK;
 }

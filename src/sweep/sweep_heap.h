@@ -11,6 +11,7 @@ typedef struct fl_sweep_entry {
     double key;  /* priority: a lower bound on the region's distance (+ base, see query.c) */
     double base; /* the cursor's travelled distance when the bound was computed */
     uint32_t node;
+    uint32_t partial; /* 1: the key is only the box bound; measure the element when at front */
 } fl_sweep_entry;
 
 typedef struct fl_sweep_heap {
@@ -28,19 +29,26 @@ static inline void fl_sweep_heap_push(fl_sweep_heap *h, fl_sweep_entry x)
     h->e[i] = x;
 }
 
-static inline fl_sweep_entry fl_sweep_heap_pop(fl_sweep_heap *h)
+/* Puts x at the root, whose entry is dropped, and sifts it down: a pop and a push in one pass
+ * (the cursor's refresh of a dirty front, query.c). */
+static inline void fl_sweep_heap_replace_top(fl_sweep_heap *h, fl_sweep_entry x)
 {
-    fl_sweep_entry top = h->e[0], last = h->e[--h->n];
     size_t i = 0;
     for (;;) {
         size_t c = 2 * i + 1;
         if (c >= h->n) break;
         if (c + 1 < h->n && h->e[c + 1].key < h->e[c].key) c++;
-        if (h->e[c].key >= last.key) break;
+        if (h->e[c].key >= x.key) break;
         h->e[i] = h->e[c];
         i = c;
     }
-    if (h->n > 0) h->e[i] = last;
+    h->e[i] = x;
+}
+
+static inline fl_sweep_entry fl_sweep_heap_pop(fl_sweep_heap *h)
+{
+    fl_sweep_entry top = h->e[0], last = h->e[--h->n];
+    if (h->n > 0) fl_sweep_heap_replace_top(h, last);
     return top;
 }
 

@@ -36,6 +36,8 @@ struct fl_sweep {
      * itself in `updates`; a cursor widens its kept intervals by the increase (query.c). */
     double moved;
     uint64_t updates;
+    /* Per node, the box of its leaves' corners: lo[3], hi[3] (boxes.c). NULL: not used. */
+    double *box;
 };
 
 /* Closest point on segment ab to p; *t in [0,1] is its parameter. Returns the squared
@@ -86,6 +88,22 @@ int fl_sweep_lift_query(const fl_sweep *s, const double *q, double *q3);
 
 /* The hierarchy a cursor searches (query.c). */
 const fl_sweep *fl_sweep_cursor_sweep(const fl_sweep_cursor *cursor);
+
+/* (Re)computes s->box bottom-up from the leaves' corners; leaves it NULL when out of memory
+ * (the boxes only speed queries up) or when a child is numbered before its parent. */
+void fl_sweep_compute_boxes(fl_sweep *s);
+
+/* Squared distance from q to the box b (lo[3], hi[3]); 0 inside. */
+static inline double fl_sweep_box_dist2(const double *b, const double *q)
+{
+    double d2 = 0;
+    for (int c = 0; c < 3; c++) {
+        double below = b[c] - q[c], above = q[c] - b[3 + c];
+        double t = below > above ? below : above;
+        if (t > 0) d2 += t * t;
+    }
+    return d2;
+}
 
 /* Allocates the sweep and its node array (2 * elements - 1 nodes). */
 fl_status fl_sweep_alloc(int dim, int triangles, size_t elements, fl_sweep **out, fl_error *err);

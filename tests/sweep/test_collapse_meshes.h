@@ -13,25 +13,25 @@
 
 static unsigned long long cm_rng = 0xc011a95eULL;
 
-static double cm_rand(double lo, double hi)
+static inline double cm_rand(double lo, double hi)
 {
     return lo + (hi - lo) * fl_test_rand01(&cm_rng);
 }
 
-static fl_mesh cm_alloc(size_t nv, size_t nt)
+static inline fl_mesh cm_alloc(size_t nv, size_t nt)
 {
     fl_mesh m = {nv, calloc(3 * nv, sizeof(double)), nt, calloc(3 * nt, sizeof(uint32_t))};
     return m;
 }
 
-static void cm_free(fl_mesh *m)
+static inline void cm_free(fl_mesh *m)
 {
     free(m->xyz);
     free(m->tri);
 }
 
 /* A closed torus-like surface, nu x nv quads split in two, with random radial noise. */
-static fl_mesh cm_noisy_torus(int nu, int nv, double noise)
+static inline fl_mesh cm_noisy_torus(int nu, int nv, double noise)
 {
     fl_mesh m = cm_alloc((size_t)nu * nv, 2 * (size_t)nu * nv);
     for (int i = 0; i < nu; i++)
@@ -53,7 +53,7 @@ static fl_mesh cm_noisy_torus(int nu, int nv, double noise)
 }
 
 /* An open height field over an n x n grid (random heights plus a wave). */
-static fl_mesh cm_open_grid(int n, double bump)
+static inline fl_mesh cm_open_grid(int n, double bump)
 {
     fl_mesh m = cm_alloc((size_t)n * n, 2 * (size_t)(n - 1) * (n - 1));
     for (int i = 0; i < n; i++)
@@ -75,7 +75,7 @@ static fl_mesh cm_open_grid(int n, double bump)
 /* The open grid plus trouble: three extra triangles on one interior edge (non-manifold), a
  * collinear and a repeated-vertex triangle, a vertex duplicating a grid vertex used by a
  * triangle, and a repeated triangle. */
-static fl_mesh cm_messy(int n)
+static inline fl_mesh cm_messy(int n)
 {
     fl_mesh g = cm_open_grid(n, 0.01);
     size_t nv = g.vertex_count + 6, nt = g.triangle_count + 7;
@@ -98,7 +98,7 @@ static fl_mesh cm_messy(int n)
 }
 
 /* n separate random triangles in the unit cube. */
-static fl_mesh cm_soup(size_t n, double size)
+static inline fl_mesh cm_soup(size_t n, double size)
 {
     fl_mesh m = cm_alloc(3 * n, n);
     for (size_t t = 0; t < n; t++) {
@@ -112,7 +112,7 @@ static fl_mesh cm_soup(size_t n, double size)
     return m;
 }
 
-static double cm_scale(const fl_mesh *m)
+static inline double cm_scale(const fl_mesh *m)
 {
     double s = 0;
     for (size_t i = 0; i < 3 * m->vertex_count; i++)
@@ -120,7 +120,7 @@ static double cm_scale(const fl_mesh *m)
     return s;
 }
 
-static ld cm_brute(const fl_mesh *m, const double *q)
+static inline ld cm_brute(const fl_mesh *m, const double *q)
 {
     ld best = INFINITY;
     for (size_t t = 0; t < m->triangle_count; t++) {
@@ -132,7 +132,7 @@ static ld cm_brute(const fl_mesh *m, const double *q)
 
 /* An exact answer: the distance equals brute force to 1e-12 relative, the element is at that
  * distance (the same triangle or an equidistant one) and the point lies on it. */
-static void cm_check_exact(const fl_mesh *m, const double *q, const fl_closest *r)
+static inline void cm_check_exact(const fl_mesh *m, const double *q, const fl_closest *r)
 {
     double tol = 1e-12 * (cm_scale(m) + fabs(q[0]) + fabs(q[1]) + fabs(q[2]));
     ld bf = cm_brute(m, q);

@@ -14,21 +14,18 @@
 
 #include "core/core.h"
 #include "sweep/collapse_internal.h"
+#include "sweep/sweep_heap.h"
 #include "sweep/sweep_internal.h"
 
 #define RING_MAX 48 /* collapses around vertices of higher valence are skipped */
-
-typedef struct edge_entry {
-    double len2;
-    uint32_t a, b;
-} edge_entry;
 
 typedef struct builder {
     const fl_mesh *m;
     fl_vec tris;   /* fl_collapse_tri */
     fl_vec cnext;  /* uint32 per corner (3 per triangle): next corner at the same vertex */
     fl_vec fhead;  /* uint32 per triangle: first fine triangle it owns */
-    fl_vec edges;  /* edge_entry min-heap of candidate collapses */
+    fl_vec edges;  /* fl_sweep_entry min-heap of candidate collapses: key = squared length */
+    fl_vec ends;   /* uint32 pairs: the vertices of candidate edge i (heap entries' node) */
     fl_vec old;    /* uint32: consumed triangles of every collapse */
     fl_vec old_start, new_start; /* uint32 per collapse */
     uint32_t *chead; /* per vertex: first corner */
@@ -60,43 +57,33 @@ static const double *vert(const builder *b, uint32_t v)
     return b->m->xyz + 3 * (size_t)v;
 }
 
-/* ---- candidate edges: a binary min-heap in one array (§4.2) ---- */
+/* ---- candidate edges: the sweep's array binary heap (sweep_heap.h, §4.2) ---- */
 
-static int edge_insert(builder *b, edge_entry x)
+/* Queues entry x (its node names a pair in b->ends). */
+static int edge_insert(builder *b, fl_sweep_entry x)
 {
-    if (fl_vec_push(&b->edges, NULL, 1)) return -1;
-    edge_entry *e = b->edges.data;
-    size_t i = b->edges.count - 1;
-    while (i > 0 && e[(i - 1) / 2].len2 > x.len2) {
-        e[i] = e[(i - 1) / 2];
-        i = (i - 1) / 2;
-    }
-    e[i] = x;
+    if (fl_vec_reserve(&b->edges, b->edges.count + 1)) return -1;
+    fl_sweep_heap h = {b->edges.data, b->edges.count};
+    fl_sweep_heap_push(&h, x);
+    b->edges.count = h.n;
     return 0;
 }
 
 static int edge_push(builder *b, uint32_t a, uint32_t c)
 {
     const double *p = vert(b, a), *q = vert(b, c);
-    edge_entry x = {(p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                        (p[2] - q[2]) * (p[2] - q[2]),
-                    a, c};
-    return edge_insert(b, x);
+    uint32_t pair[2] = {a, c};
+    double len2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                  (p[2] - q[2]) * (p[2] - q[2]);
+    if (b->ends.count / 2 >= UINT32_MAX || fl_vec_push(&b->ends, pair, 2)) return -1;
+    return edge_insert(b, (fl_sweep_entry){len2, 0, (uint32_t)(b->ends.count / 2 - 1)});
 }
 
-static edge_entry edge_pop(builder *b)
+static fl_sweep_entry edge_pop(builder *b)
 {
-    edge_entry *e = b->edges.data, top = e[0], last = e[--b->edges.count];
-    size_t n = b->edges.count, i = 0;
-    for (;;) {
-        size_t c = 2 * i + 1;
-        if (c >= n) break;
-        if (c + 1 < n && e[c + 1].len2 < e[c].len2) c++;
-        if (!(e[c].len2 < last.len2)) break;
-        e[i] = e[c];
-        i = c;
-    }
-    if (n > 0) e[i] = last;
+    fl_sweep_heap h = {b->edges.data, b->edges.count};
+    fl_sweep_entry top = fl_sweep_heap_pop(&h);
+    b->edges.count = h.n;
     return top;
 }
 
@@ -310,10 +297,10 @@ static int collapse(builder *b, uint32_t u, uint32_t v, const ring *ru, double s
 
 /* Tries to collapse edge e in whichever direction is safe; 1 if done (ru, rv: u's and v's
  * rings before), 0 if not, -1 out of memory. */
-static int try_collapse(builder *b, edge_entry e, double scale, ring *ru, ring *rv)
+static int try_collapse(builder *b, const uint32_t *e, double scale, ring *ru, ring *rv)
 {
     for (int dir = 0; dir < 2; dir++) {
-        uint32_t u = dir ? e.b : e.a, v = dir ? e.a : e.b;
+        uint32_t u = e[dir], v = e[1 - dir];
         if (!ring_gather(b, u, ru) || !ring_gather(b, v, rv)) continue;
         if (!collapse_safe(b, u, v, ru, rv)) continue;
         if (b->tris.count + ru->n >= UINT32_MAX - 1 || collapse(b, u, v, ru, scale)) return -1;
@@ -332,28 +319,31 @@ static fl_status simplify(builder *b, double scale, const fl_sweep_options *opt,
 {
     ring ru, rv;
     fl_vec later;
-    fl_vec_init(&later, sizeof(edge_entry));
+    fl_vec_init(&later, sizeof(fl_sweep_entry));
     uint32_t *lock = calloc(b->m->vertex_count ? b->m->vertex_count : 1, sizeof *lock);
     fl_status st = lock ? FL_OK : fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     size_t collapsed = 1;
     for (uint32_t pass = 1; st == FL_OK && collapsed > 0; pass++) {
         collapsed = 0;
         while (st == FL_OK && b->edges.count > 0) {
-            edge_entry e = edge_pop(b);
-            if (lock[e.a] == pass || lock[e.b] == pass) {
-                if (fl_vec_push(&later, &e, 1)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+            fl_sweep_entry x = edge_pop(b);
+            uint32_t e[2];
+            memcpy(e, u32_at(&b->ends, 2 * (size_t)x.node), sizeof e);
+            if (lock[e[0]] == pass || lock[e[1]] == pass) {
+                if (fl_vec_push(&later, &x, 1))
+                    st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
                 continue;
             }
             int r = try_collapse(b, e, scale, &ru, &rv);
             if (r < 0) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
             if (r <= 0) continue;
             collapsed++;
-            lock[e.a] = lock[e.b] = pass;
+            lock[e[0]] = lock[e[1]] = pass;
             for (size_t i = 0; i < ru.nn; i++) lock[ru.nb[i]] = pass;
             for (size_t i = 0; i < rv.nn; i++) lock[rv.nb[i]] = pass;
         }
         for (size_t i = 0; st == FL_OK && i < later.count; i++)
-            if (edge_insert(b, ((edge_entry *)later.data)[i]))
+            if (edge_insert(b, ((fl_sweep_entry *)later.data)[i]))
                 st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
         later.count = 0;
         if (st == FL_OK && opt &&
@@ -394,6 +384,7 @@ static void builder_free(builder *b)
     fl_vec_free(&b->cnext);
     fl_vec_free(&b->fhead);
     fl_vec_free(&b->edges);
+    fl_vec_free(&b->ends);
     fl_vec_free(&b->old);
     fl_vec_free(&b->old_start);
     fl_vec_free(&b->new_start);
@@ -407,7 +398,8 @@ static int builder_start(builder *b, const fl_mesh *m)
     fl_vec_init(&b->tris, sizeof(fl_collapse_tri));
     fl_vec_init(&b->cnext, sizeof(uint32_t));
     fl_vec_init(&b->fhead, sizeof(uint32_t));
-    fl_vec_init(&b->edges, sizeof(edge_entry));
+    fl_vec_init(&b->edges, sizeof(fl_sweep_entry));
+    fl_vec_init(&b->ends, sizeof(uint32_t));
     fl_vec_init(&b->old, sizeof(uint32_t));
     fl_vec_init(&b->old_start, sizeof(uint32_t));
     fl_vec_init(&b->new_start, sizeof(uint32_t));

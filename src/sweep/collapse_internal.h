@@ -21,7 +21,7 @@
  * those fine triangles whole: d(q, t) - radius[t] is a lower bound of the distance from q to
  * every fine triangle t stands for. Every current mesh's owned sets partition the fine mesh,
  * so the smallest such bound over the current mesh is a lower bound of the distance to the
- * input (tests/sweep/test_collapse_bound.c samples it densely). */
+ * input (tests/sweep/test_collapse_tables.c samples it densely). */
 #ifndef FL_SWEEP_COLLAPSE_INTERNAL_H
 #define FL_SWEEP_COLLAPSE_INTERNAL_H
 

@@ -183,11 +183,21 @@ static int ring_manifold(const builder *b, const ring *r)
     return ring_one_fan(b, r) ? boundary : -1;
 }
 
+/* A normal of triangle (a, p, c), up to a positive factor: the edges are scaled by a power of
+ * two to about 1 first, so that the products neither overflow (coordinates up to 1e150) nor
+ * underflow (1e-300): otherwise no collapse would pass the fold-over test at those scales. */
 static void normal(const double *a, const double *p, const double *c, double *n)
 {
-    double e[3], f[3];
-    for (int i = 0; i < 3; i++)
+    double e[3], f[3], m = 0;
+    for (int i = 0; i < 3; i++) {
         e[i] = p[i] - a[i], f[i] = c[i] - a[i];
+        m = fmax(m, fmax(fabs(e[i]), fabs(f[i])));
+    }
+    if (m > 0 && m < INFINITY) {
+        double scale = ldexp(1.0, -ilogb(m));
+        for (int i = 0; i < 3; i++)
+            e[i] *= scale, f[i] *= scale;
+    }
     n[0] = e[1] * f[2] - e[2] * f[1];
     n[1] = e[2] * f[0] - e[0] * f[2];
     n[2] = e[0] * f[1] - e[1] * f[0];

@@ -157,6 +157,34 @@ static void test_tolerance(void)
     cm_free(&m);
 }
 
+/* Huge coordinates (1e146, with queries up to 1000x farther, near the 1e150 limit) and tiny
+ * ones (1e-140, whose squared distances still do not underflow): still exact, and the
+ * simplification still collapses (its fold-over test rescales the edges; before, the normals'
+ * products overflowed or underflowed and no collapse passed). */
+static void test_extreme_scales(void)
+{
+    double scales[2] = {1e146, 1e-140};
+    for (int k = 0; k < 2; k++) {
+        fl_mesh m = cm_noisy_torus(16, 8, 0.05);
+        for (size_t i = 0; i < 3 * m.vertex_count; i++)
+            m.xyz[i] *= scales[k];
+        fl_sweep_collapse *h = build(&m);
+        if (!h) continue;
+        fl_sweep_collapse_info info;
+        fl_error err = {0};
+        CHECK_STATUS(fl_sweep_collapse_info_get(h, &info, &err), FL_OK, &err);
+        CHECK(info.splits > 0);
+        double q[3 * 60];
+        random_queries(&m, q, 60);
+        fl_closest r[60];
+        CHECK_STATUS(fl_sweep_collapse_closest(h, q, 60, 0.0, r, &err), FL_OK, &err);
+        for (int i = 0; i < 60; i++)
+            cm_check_exact(&m, q + 3 * i, r + i);
+        fl_sweep_collapse_free(h);
+        cm_free(&m);
+    }
+}
+
 static void test_bad_input(void)
 {
     fl_error err = {0};
@@ -183,4 +211,5 @@ static void test_bad_input(void)
 FL_TEST_MAIN(FL_TEST_CASE(test_closed_random), FL_TEST_CASE(test_open_random),
              FL_TEST_CASE(test_messy_random), FL_TEST_CASE(test_soup_random),
              FL_TEST_CASE(test_coherent_walk), FL_TEST_CASE(test_tolerance),
+             FL_TEST_CASE(test_extreme_scales),
              FL_TEST_CASE(test_bad_input))

@@ -4,8 +4,10 @@
  *       near    a vertex (random) plus an offset up to 1 % of the diagonal, random order
  *       path    a random walk of N steps of 0.05 % of the diagonal through the box, reflected
  *               at its faces: each query close to the last, the coherent case of §3.3 / §5.1
- *   eval_closest run PREFIX KIND [REPS]   times the hierarchy's build and fl_sweep_closest
- *       (exact answers) on the queries; prints RESULT lines, writes PREFIX.KIND.ours.d
+ *   eval_closest run PREFIX KIND [REPS] [collapse]   times the hierarchy's build and
+ *       fl_sweep_closest (exact answers) on the queries; prints RESULT lines, writes
+ *       PREFIX.KIND.ours.d; with "collapse" the edge-collapse hierarchy (fl_sweep_collapse_*)
+ *       instead, writing PREFIX.KIND.collapse.d and the hierarchy's bytes
  *   eval_closest compare A.d B.d          prints the largest |difference| of two distance files */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -97,7 +99,32 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static int run(const char *prefix, const char *kind, int reps)
+/* One build + query run of the edge-collapse hierarchy; *bytes gets its size. */
+static int run_collapse_once(const fl_mesh *m, const double *q, size_t n, fl_closest *r,
+                             double *build, double *query, size_t *bytes)
+{
+    fl_error err;
+    fl_sweep_collapse *h;
+    double t0 = ce_now();
+    if (fl_sweep_collapse_build(m, NULL, &h, &err)) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    *build = ce_now() - t0;
+    t0 = ce_now();
+    if (fl_sweep_collapse_closest(h, q, n, 0, r, &err)) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    *query = ce_now() - t0;
+    fl_sweep_collapse_info info;
+    fl_sweep_collapse_info_get(h, &info, &err);
+    *bytes = info.bytes + info.cursor_bytes;
+    fl_sweep_collapse_free(h);
+    return 0;
+}
+
+static int run(const char *prefix, const char *kind, int reps, int collapse)
 {
     ce_mesh cm;
     size_t n = 0;
@@ -110,7 +137,10 @@ static int run(const char *prefix, const char *kind, int reps)
     fl_error err;
     fl_closest *r = malloc(n * sizeof *r);
     double *build = malloc(reps * sizeof *build), *query = malloc(reps * sizeof *query);
-    for (int k = 0; k < reps; k++) {
+    size_t bytes = 0;
+    for (int k = 0; k < reps && collapse; k++)
+        if (run_collapse_once(&m, q, n, r, build + k, query + k, &bytes)) return 1;
+    for (int k = 0; k < reps && !collapse; k++) {
         fl_sweep *sw;
         double t0 = ce_now();
         if (fl_sweep_build(&m, NULL, &sw, &err)) {
@@ -134,9 +164,11 @@ static int run(const char *prefix, const char *kind, int reps)
         d[i] = r[i].distance;
         reused += r[i].reused;
     }
-    ce_write_distances(prefix, kind, "ours", d, n);
-    printf("RESULT method=flintstone kind=%s queries=%zu build_s=%.6f query_s=%.6f reused=%zu\n",
-           kind, n, build[reps / 2], query[reps / 2], reused);
+    ce_write_distances(prefix, kind, collapse ? "collapse" : "ours", d, n);
+    printf("RESULT method=flintstone%s kind=%s queries=%zu build_s=%.6f query_s=%.6f reused=%zu "
+           "bytes_per_triangle=%.1f\n",
+           collapse ? "_collapse" : "", kind, n, build[reps / 2], query[reps / 2], reused,
+           (double)bytes / (double)m.triangle_count);
     free(d);
     free(r);
     free(q);
@@ -169,9 +201,10 @@ int main(int argc, char **argv)
     if (argc >= 5 && strcmp(argv[1], "prepare") == 0)
         return prepare(argv[2], argv[3], (size_t)atol(argv[4]));
     if (argc >= 4 && strcmp(argv[1], "run") == 0)
-        return run(argv[2], argv[3], argc > 4 ? atoi(argv[4]) : 3);
+        return run(argv[2], argv[3], argc > 4 ? atoi(argv[4]) : 3,
+                   argc > 5 && strcmp(argv[5], "collapse") == 0);
     if (argc >= 4 && strcmp(argv[1], "compare") == 0) return compare(argv[2], argv[3]);
-    fprintf(stderr, "usage: eval_closest prepare MESH PREFIX N | run PREFIX KIND [REPS] | "
+    fprintf(stderr, "usage: eval_closest prepare MESH PREFIX N | run PREFIX KIND [REPS] [collapse] | "
                     "compare A.d B.d\n");
     return 2;
 }

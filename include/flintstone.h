@@ -1896,6 +1896,66 @@ fl_status fl_sweep_update_vertices(fl_sweep *sweep, const double *xyz, fl_error 
 
 /* end of sweep_dynamic */
 
+/* ==== sweep_collapse ====================================================================== */
+/* (section owned by src/sweep/collapse*.c; docs/sweep.md "The edge-collapse hierarchy")
+ *
+ * Meshsweeper's own mesh hierarchy (Guéziec 2001, §4.2-4.3): error-bounded edge collapses
+ * simplify the mesh to a base mesh; every triangle of the hierarchy, swept by a sphere of its
+ * error radius, bounds the input triangles it stands for; a query refines the base mesh by
+ * vertex splits (with their "split before" dependencies) in the order of the priority process
+ * of §3.2 and answers exactly, or within a tolerance, like fl_sweep_closest. A cursor keeps
+ * the refined mesh between coherent queries (§5.1) and goes back to the base mesh when that
+ * stops paying. Same input rules and results (fl_closest) as fl_sweep_build/fl_sweep_closest;
+ * `element` is an input triangle index. The hierarchy is immutable after building and may be
+ * shared by threads; a cursor belongs to one thread. */
+
+typedef struct fl_sweep_collapse fl_sweep_collapse;
+typedef struct fl_sweep_collapse_cursor fl_sweep_collapse_cursor;
+
+/* Sizes of a collapse hierarchy. */
+typedef struct fl_sweep_collapse_info {
+    size_t fine_triangles; /* input triangles */
+    size_t base_triangles; /* triangles of the base (most simplified) mesh */
+    size_t splits;         /* vertex splits (= edge collapses performed) */
+    size_t triangles;      /* all triangles of the hierarchy, input ones included */
+    size_t bytes;          /* memory held by the hierarchy */
+    size_t cursor_bytes;   /* memory held by one cursor on it */
+} fl_sweep_collapse_info;
+
+/* Builds the edge-collapse hierarchy of `mesh` (any topology; unsafe collapses are skipped, so
+ * the base mesh may keep many triangles, e.g. all of a soup of separate triangles). opt may be
+ * NULL (progress only). FL_ERR_USAGE, FL_ERR_INPUT (as fl_sweep_build), FL_ERR_NOMEM. Free
+ * with fl_sweep_collapse_free. */
+fl_status fl_sweep_collapse_build(const fl_mesh *mesh, const fl_sweep_options *opt,
+                                  fl_sweep_collapse **out, fl_error *err);
+
+/* Frees a collapse hierarchy (NULL is fine). */
+void fl_sweep_collapse_free(fl_sweep_collapse *hierarchy);
+
+/* Fills *info with the hierarchy's sizes. FL_ERR_USAGE for NULL arguments. */
+fl_status fl_sweep_collapse_info_get(const fl_sweep_collapse *hierarchy,
+                                     fl_sweep_collapse_info *info, fl_error *err);
+
+/* Creates a cursor (the refined mesh and priority queue of coherent queries, §5.1) on a
+ * hierarchy, which must outlive it. FL_ERR_USAGE, FL_ERR_NOMEM. */
+fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
+                                       fl_sweep_collapse_cursor **out, fl_error *err);
+
+/* One query (q holds 3 doubles) as in fl_sweep_cursor_closest; `reused` is always 0 and
+ * `visited` counts the triangles whose distance was computed. FL_ERR_USAGE for NULL
+ * arguments, a negative tolerance or a query not finite or beyond 1e150. */
+fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
+                                           double tolerance, fl_closest *result, fl_error *err);
+
+/* Frees a cursor (NULL is fine). */
+void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor);
+
+/* Answers nq queries (3 doubles each) in order through one cursor, as fl_sweep_closest. */
+fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const double *q, size_t nq,
+                                    double tolerance, fl_closest *results, fl_error *err);
+
+/* end of sweep_collapse */
+
 #ifdef __cplusplus
 }
 #endif

@@ -5,6 +5,9 @@
 # the surface in random order, a coherent random walk), exact answers on both sides, compared
 # query by query. Times: the median over BENCH_ROUNDS alternating processes of each process's
 # median of CLOSEST_REPS runs; the ratio is ours / CGAL for the queries; builds are in the notes.
+# Rows *_collapse: the same for the edge-collapse hierarchy (fl_sweep_collapse_*, Guéziec
+# §4.2-4.3), run in the same rounds (spatial, collapse, CGAL alternate), with its ratio to the
+# spatial hierarchy and its memory (hierarchy + one cursor) in the notes.
 #
 # Environment besides lib.sh's: CLOSEST_QUERIES (default 200000), CLOSEST_REPS (default 1).
 set -euo pipefail
@@ -14,16 +17,22 @@ REPS=${CLOSEST_REPS:-1}
 
 one_mesh() { # NAME FILE NOTES
   local name=$1 file=$2 notes=$3 prefix=$BENCH_DATA/closest-$1 kind o p ob pb line diff prep
+  local c cb bytes
   [ -e "$file" ] || { echo "ERROR|closest_$name|$file missing (bench/get-data.sh)"; return 0; }
   prep=$("$BENCH_BIN/eval_closest" prepare "$file" "$prefix" "$NQ") ||
     { echo "ERROR|closest_$name|prepare failed"; return 0; }
   for kind in random near path; do
-    o="" p="" ob="" pb=""
+    o="" p="" ob="" pb="" c="" cb=""
     for ((r = 0; r < BENCH_ROUNDS; r++)); do
       line=$("$BENCH_BIN/eval_closest" run "$prefix" $kind "$REPS" | grep '^RESULT') ||
         { echo "ERROR|closest_${name}_$kind|ours failed"; return 0; }
       o+="$(field query_s "$line")"$'\n'
       ob+="$(field build_s "$line")"$'\n'
+      line=$("$BENCH_BIN/eval_closest" run "$prefix" $kind "$REPS" collapse | grep '^RESULT') ||
+        { echo "ERROR|closest_${name}_${kind}_collapse|ours failed"; return 0; }
+      c+="$(field query_s "$line")"$'\n'
+      cb+="$(field build_s "$line")"$'\n'
+      bytes=$(field bytes_per_triangle "$line")
       line=$("$BENCH_BIN/cgal_aabb" "$prefix" $kind "$REPS" | grep '^RESULT') ||
         { echo "ERROR|closest_${name}_$kind|CGAL failed"; return 0; }
       p+="$(field query_s "$line")"$'\n'
@@ -35,6 +44,12 @@ one_mesh() { # NAME FILE NOTES
       "$name" $kind "$o" "$p" "$(awk -v o="$o" -v p="$p" 'BEGIN {printf "%.2f", o / p}')" "$notes" \
       "$NQ" $kind "$(field max_abs_diff "$diff")" "$(field max_distance "$diff")" \
       "$(median <<<"${ob%$'\n'}")" "$(median <<<"${pb%$'\n'}")"
+    diff=$("$BENCH_BIN/eval_closest" compare "$prefix.$kind.collapse.d" "$prefix.$kind.cgal.d")
+    c=$(median <<<"${c%$'\n'}")
+    printf 'ROW|closest_%s_%s_collapse|%s|CGAL AABB_tree|%s|%s|%s; edge-collapse hierarchy, %s %s queries; %.2f x the spatial hierarchy; distances agree to %s; build collapse %s s, CGAL %s s; %s bytes a triangle (hierarchy + cursor)\n' \
+      "$name" $kind "$c" "$p" "$(awk -v o="$c" -v p="$p" 'BEGIN {printf "%.2f", o / p}')" "$notes" \
+      "$NQ" $kind "$(awk -v o="$c" -v p="$o" 'BEGIN {print o / p}')" "$(field max_abs_diff "$diff")" \
+      "$(median <<<"${cb%$'\n'}")" "$(median <<<"${pb%$'\n'}")" "$bytes"
   done
 }
 one_mesh bunny "$BENCH_CACHE/real/bunny.off" "npm bunny (3 674 triangles)"

@@ -1,6 +1,8 @@
 /* flintstone closest SHAPE QUERIES [-o OUT.csv] [--tolerance T] [--k N | --within D] [--closed]
+ *                   [--hierarchy spatial|collapse]
  * Closest points on a triangle mesh or a polyline through the Meshsweeper hierarchy
- * (Guéziec §3-4). */
+ * (Guéziec §3-4): the spatial tree (fl_sweep_*) or the edge-collapse one (fl_sweep_collapse_*,
+ * meshes only). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,7 +13,7 @@
 
 static const char *usage_text =
     "usage: flintstone closest SHAPE QUERIES [-o OUT.csv] [--tolerance T] [--k N | --within D]\n"
-    "                          [--closed] [--json] [--quiet]\n"
+    "                          [--closed] [--hierarchy spatial|collapse] [--json] [--quiet]\n"
     "\n"
     "For every query point, the closest point on SHAPE: a triangle mesh (.off .obj .ply .stl) or\n"
     "a polyline (a point file in order: .xy .xyz .csv .txt; --closed joins the last point to\n"
@@ -21,6 +23,9 @@ static const char *usage_text =
     "  --tolerance T  stop each query once its distance is known within T (an interval)\n"
     "  --k N          also list the N nearest elements of each query (CSV rows)\n"
     "  --within D     also list every element within distance D of each query (CSV rows)\n"
+    "  --hierarchy H  spatial (default): a tree of triangles split top-down; collapse: the\n"
+    "                 paper's edge-collapse hierarchy refined by vertex splits (meshes only,\n"
+    "                 not with --k / --within)\n"
     "  -o OUT.csv     closest: query,distance,x,y,z,element,b0,b1,b2,lower,upper;\n"
     "                 with --k / --within: query,rank,element,distance\n"
     "  --json         queries, mean_distance, max_distance, seconds, queries_per_second\n"
@@ -31,7 +36,7 @@ typedef struct closest_args {
     const char *shape, *queries;
     double tolerance, within;
     size_t k;
-    int closed, has_within;
+    int closed, has_within, collapse;
 } closest_args;
 
 static int parse(int argc, char **argv, cli_common *c, closest_args *a)
@@ -41,7 +46,8 @@ static int parse(int argc, char **argv, cli_common *c, closest_args *a)
         if (r < 0) return 1;
         if (r > 0) continue;
         const char *o = argv[i];
-        int value = !strcmp(o, "--tolerance") || !strcmp(o, "--k") || !strcmp(o, "--within");
+        int value = !strcmp(o, "--tolerance") || !strcmp(o, "--k") || !strcmp(o, "--within") ||
+                    !strcmp(o, "--hierarchy");
         if (value && i + 1 >= argc) return cli_fail(1, "closest: %s needs a value", o);
         if (!strcmp(o, "--tolerance")) {
             if (cli_parse_double(argv[++i], &a->tolerance) || a->tolerance < 0)
@@ -53,6 +59,11 @@ static int parse(int argc, char **argv, cli_common *c, closest_args *a)
             if (cli_parse_double(argv[++i], &a->within) || a->within < 0)
                 return cli_fail(1, "closest: --within takes a distance >= 0");
             a->has_within = 1;
+        } else if (!strcmp(o, "--hierarchy")) {
+            const char *h = argv[++i];
+            if (strcmp(h, "spatial") && strcmp(h, "collapse"))
+                return cli_fail(1, "closest: --hierarchy takes spatial or collapse");
+            a->collapse = !strcmp(h, "collapse");
         } else if (!strcmp(o, "--closed")) {
             a->closed = 1;
         } else if (o[0] == '-' && o[1]) {
@@ -66,6 +77,8 @@ static int parse(int argc, char **argv, cli_common *c, closest_args *a)
         }
     }
     if (a->k && a->has_within) return cli_fail(1, "closest: give --k or --within, not both");
+    if (a->collapse && (a->k || a->has_within))
+        return cli_fail(1, "closest: --hierarchy collapse does not support --k / --within");
     return 0;
 }
 
@@ -76,16 +89,22 @@ static int is_mesh_file(const char *path)
     return !strcmp(ext, "off") || !strcmp(ext, "obj") || !strcmp(ext, "ply") || !strcmp(ext, "stl");
 }
 
-static fl_status build_shape(const closest_args *a, fl_sweep **s, fl_error *err)
+/* The shape's hierarchy: *s (spatial) or, with --hierarchy collapse, *hc. */
+static fl_status build_shape(const closest_args *a, fl_sweep **s, fl_sweep_collapse **hc,
+                             fl_error *err)
 {
     if (is_mesh_file(a->shape)) {
         fl_mesh m;
         fl_status st = fl_read_mesh(a->shape, &m, err);
         if (st) return st;
-        st = fl_sweep_build(&m, NULL, s, err);
+        st = a->collapse ? fl_sweep_collapse_build(&m, NULL, hc, err)
+                         : fl_sweep_build(&m, NULL, s, err);
         fl_mesh_free(&m);
         return st;
     }
+    if (a->collapse)
+        return fl_fail(err, FL_ERR_INPUT, a->shape, -1,
+                       "--hierarchy collapse needs a triangle mesh (.off .obj .ply .stl)");
     fl_points p;
     fl_status st = fl_read_points(a->shape, &p, err);
     if (st) return st;
@@ -137,9 +156,11 @@ static fl_status write_neighbours(const closest_args *a, const fl_sweep *s, cons
 }
 
 static fl_status run(const cli_common *c, const closest_args *a, const fl_sweep *s,
-                     const fl_points *q, fl_closest *res, fl_error *err)
+                     const fl_sweep_collapse *hc, const fl_points *q, fl_closest *res,
+                     fl_error *err)
 {
-    fl_status st = fl_sweep_closest(s, q->coords, q->count, a->tolerance, res, err);
+    fl_status st = hc ? fl_sweep_collapse_closest(hc, q->coords, q->count, a->tolerance, res, err)
+                      : fl_sweep_closest(s, q->coords, q->count, a->tolerance, res, err);
     if (st || !c->output) return st;
     fl_out_file out;
     if ((st = fl_out_open(&out, c->output, 0, err))) return st;
@@ -169,17 +190,23 @@ int cmd_closest(int argc, char **argv)
     if (!a.queries) return cli_fail(1, "closest: needs SHAPE and QUERIES (see --help)");
     fl_error err;
     fl_sweep *s = NULL;
+    fl_sweep_collapse *hc = NULL;
     fl_points q = {0};
     double t0 = cli_now();
-    fl_status st = build_shape(&a, &s, &err);
+    fl_status st = build_shape(&a, &s, &hc, &err);
+    int dim = hc ? 3 : fl_sweep_dim(s);
+    size_t elements = 0;
+    fl_sweep_collapse_info info = {0};
+    if (st == FL_OK && hc) fl_sweep_collapse_info_get(hc, &info, NULL);
+    elements = hc ? info.fine_triangles : fl_sweep_element_count(s);
     if (st == FL_OK) st = fl_read_points(a.queries, &q, &err);
-    if (st == FL_OK && q.dim != fl_sweep_dim(s))
+    if (st == FL_OK && q.dim != dim)
         st = fl_fail(&err, FL_ERR_INPUT, a.queries, -1, "queries are %dD but the shape is %dD",
-                     q.dim, fl_sweep_dim(s));
+                     q.dim, dim);
     fl_closest *res = st == FL_OK ? fl_alloc_array(q.count, sizeof *res) : NULL;
     if (st == FL_OK && !res) st = fl_fail(&err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     double t1 = cli_now();
-    if (st == FL_OK) st = run(&c, &a, s, &q, res, &err);
+    if (st == FL_OK) st = run(&c, &a, s, hc, &q, res, &err);
     double query_seconds = cli_now() - t1;
     if (st == FL_OK) {
         double sum = 0, max = 0;
@@ -192,7 +219,7 @@ int cmd_closest(int argc, char **argv)
             cli_json j;
             cli_json_begin(&j, stdout);
             cli_json_uint(&j, "queries", q.count);
-            cli_json_uint(&j, "elements", fl_sweep_element_count(s));
+            cli_json_uint(&j, "elements", elements);
             cli_json_double(&j, "mean_distance", mean);
             cli_json_double(&j, "max_distance", max);
             cli_json_double(&j, "seconds", cli_now() - t0);
@@ -201,11 +228,12 @@ int cmd_closest(int argc, char **argv)
             cli_json_end(&j);
         } else if (!c.quiet) {
             printf("%zu queries on %zu elements: mean distance %.6g, max %.6g (%.3f s)\n", q.count,
-                   fl_sweep_element_count(s), mean, max, cli_now() - t0);
+                   elements, mean, max, cli_now() - t0);
         }
     }
     free(res);
     fl_points_free(&q);
     fl_sweep_free(s);
+    fl_sweep_collapse_free(hc);
     return st ? cli_report(&err) : 0;
 }

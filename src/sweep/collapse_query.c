@@ -1,0 +1,309 @@
+/* Queries on the edge-collapse hierarchy (Guéziec 2001, §4.2-4.3 with the priority process of
+ * §3.2 and the coherence of §5.1): selective refinement of the base mesh by vertex splits.
+ *
+ * The queue holds the triangles of the current (partly refined) mesh keyed by their lower
+ * bound d - radius (collapse_internal.h: they cover the input). The front triangle is
+ * refined: the split of its creator runs, after the splits it depends on ("split before",
+ * performed in a topological order by a depth-first walk of the dependency DAG); the split
+ * replaces its new triangles by the consumed ones, which enter the queue. Triangles a split
+ * removes stay in the heap and are dropped when they reach the front (they are no longer
+ * present). The first present, clean input triangle at the front is the closest.
+ *
+ * Coherence (§5.1): the cursor keeps the refined mesh and its queue between queries. A move of
+ * the query by δ lowers every kept lower bound by at most δ; as in query.c the cursor adds δ
+ * to a travelled distance and entries computed at an earlier travelled distance are "dirty"
+ * and recomputed when they reach the front. It goes back to the base mesh ("substituted with
+ * the base mesh", §4.2) when the query jumps farther than the last distance, when the last
+ * query cost more than one from the base mesh, or when the queue grows far beyond that.
+ *
+ * Arrays only: the heap (one entry per hierarchy triangle at most, since a triangle enters
+ * once per refinement from the base mesh), the done flags of the splits, the list of done
+ * splits (to reset) and the walk's stack are allocated once per cursor. */
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/core.h"
+#include "sweep/collapse_internal.h"
+#include "sweep/sweep_heap.h"
+#include "sweep/sweep_internal.h"
+
+struct fl_sweep_collapse_cursor {
+    const fl_sweep_collapse *h;
+    fl_sweep_heap heap;
+    uint8_t *done;      /* per split */
+    uint32_t *done_list; /* the done splits, to undo them on a reset */
+    size_t done_count;
+    uint32_t *stack; /* the dependency walk */
+    double q[3];
+    double travelled;
+    double last_distance;
+    size_t reset_cost, last_cost;
+    int started;
+};
+
+typedef struct query_state {
+    double q[3];
+    double slack;
+    double upper;    /* best upper bound found (§3.2) */
+    uint32_t best;   /* nearest input triangle evaluated, for early stops */
+    double best_d;
+    size_t visited;
+} query_state;
+
+static const double *vtx(const fl_sweep_collapse *h, uint32_t v)
+{
+    return h->xyz + 3 * (size_t)v;
+}
+
+static double tri_distance(const fl_sweep_collapse *h, uint32_t t, const double *q, double *bary,
+                           double *point)
+{
+    const uint32_t *v = h->tri[t].v;
+    return sqrt(fl_sweep_triangle_closest(q, vtx(h, v[0]), vtx(h, v[1]), vtx(h, v[2]), bary,
+                                          point));
+}
+
+/* Computes triangle t's bounds at the current query and queues it (clean). The upper bound of
+ * a coarse triangle is the distance to a vertex of an input triangle it stands for: d + radius
+ * would need the triangle to lie within its radius of the input too, which the ownership does
+ * not promise (docs/sweep.md). */
+static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
+{
+    const fl_sweep_collapse *h = c->h;
+    const fl_collapse_tri *x = h->tri + t;
+    double bary[3], p[3];
+    double d = tri_distance(h, t, st->q, bary, p), lo = d, hi = d;
+    st->visited++;
+    if (x->creator != FL_COLLAPSE_NONE) {
+        lo = d - x->radius - st->slack - 16 * DBL_EPSILON * c->travelled;
+        hi = INFINITY;
+        if (x->rep != FL_COLLAPSE_NONE) {
+            const double *r = vtx(h, x->rep);
+            hi = sqrt((st->q[0] - r[0]) * (st->q[0] - r[0]) + (st->q[1] - r[1]) * (st->q[1] - r[1]) +
+                      (st->q[2] - r[2]) * (st->q[2] - r[2])) +
+                 st->slack;
+        }
+    } else if (d < st->best_d) {
+        st->best_d = d;
+        st->best = t;
+    }
+    if (hi < st->upper) st->upper = hi;
+    fl_sweep_heap_push(&c->heap, (fl_sweep_entry){lo + c->travelled, c->travelled, t, 0});
+}
+
+/* Runs split k: its new triangles leave the mesh (their heap entries go stale), the triangles
+ * collapse k consumed come back and are queued. */
+static void split_run(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
+{
+    const fl_sweep_collapse *h = c->h;
+    c->done[k] = 1;
+    c->done_list[c->done_count++] = k;
+    for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++)
+        visit(c, st, h->old[i]);
+}
+
+/* A split of k's "split before" set that is not done yet, or NONE: the destroyers of k's new
+ * triangles (each present only once its destroyer's split ran). */
+static uint32_t pending_dependency(const fl_sweep_collapse_cursor *c, uint32_t k)
+{
+    const fl_sweep_collapse *h = c->h;
+    for (uint32_t t = h->new_start[k]; t < h->new_start[k + 1]; t++) {
+        uint32_t d = h->tri[t].destroyer;
+        if (d != FL_COLLAPSE_NONE && !c->done[d]) return d;
+    }
+    return FL_COLLAPSE_NONE;
+}
+
+/* Runs split k after the splits it needs, in a topological order of the dependency DAG (a
+ * depth-first walk; dependencies point to later collapses, so the stack holds an increasing
+ * path and never more than split_count entries). */
+static void refine(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
+{
+    size_t top = 0;
+    c->stack[top++] = k;
+    while (top > 0) {
+        uint32_t j = c->stack[top - 1];
+        if (c->done[j]) {
+            top--;
+            continue;
+        }
+        uint32_t d = pending_dependency(c, j);
+        if (d != FL_COLLAPSE_NONE) {
+            c->stack[top++] = d;
+            continue;
+        }
+        top--;
+        split_run(c, st, j);
+    }
+}
+
+static void reset_to_base(fl_sweep_collapse_cursor *c, query_state *st)
+{
+    for (size_t i = 0; i < c->done_count; i++)
+        c->done[c->done_list[i]] = 0;
+    c->done_count = 0;
+    c->heap.n = 0;
+    c->travelled = 0;
+    c->started = 1;
+    c->reset_cost = SIZE_MAX;
+    for (size_t i = 0; i < c->h->base_count; i++)
+        visit(c, st, c->h->base[i]);
+}
+
+/* §5.1 bookkeeping before a query: account the move, or go back to the base mesh. */
+static void advance(fl_sweep_collapse_cursor *c, query_state *st)
+{
+    double m2 = 0;
+    for (int i = 0; i < 3; i++)
+        m2 += (st->q[i] - c->q[i]) * (st->q[i] - c->q[i]);
+    double move = sqrt(m2);
+    int reset = !c->started || !(move <= c->last_distance) || c->last_cost > c->reset_cost ||
+                c->heap.n > 8 * c->reset_cost + 64 + c->h->base_count;
+    memcpy(c->q, st->q, sizeof c->q);
+    if (reset) {
+        reset_to_base(c, st);
+    } else {
+        c->travelled += move + st->slack;
+    }
+}
+
+static void answer_exact(const fl_sweep_collapse *h, uint32_t t, const double *q, fl_closest *r)
+{
+    r->distance = tri_distance(h, t, q, r->bary, r->point);
+    r->element = t; /* input triangles keep their index in the hierarchy */
+    r->lower = r->upper = r->distance;
+    r->exact = 1;
+}
+
+static void answer_interval(const fl_sweep_collapse *h, const query_state *st, double lower,
+                            fl_closest *r)
+{
+    if (st->best != FL_COLLAPSE_NONE) {
+        answer_exact(h, st->best, st->q, r);
+    } else {
+        r->element = FL_SWEEP_NONE;
+        for (int i = 0; i < 3; i++)
+            r->point[i] = r->bary[i] = NAN;
+    }
+    r->lower = lower > 0 ? lower : 0;
+    r->upper = st->upper;
+    r->distance = (r->lower + r->upper) / 2;
+    r->exact = 0;
+}
+
+static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double tol,
+                           fl_closest *r)
+{
+    const fl_sweep_collapse *h = c->h;
+    query_state st = {{q3[0], q3[1], q3[2]}, 0, INFINITY, FL_COLLAPSE_NONE, INFINITY, 0};
+    double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
+    st.slack = 64 * DBL_EPSILON * (h->scale + m);
+    advance(c, &st);
+    while (c->heap.n > 0) {
+        fl_sweep_entry top = c->heap.e[0];
+        if (!fl_collapse_present(h, c->done, top.node)) { /* removed by a split */
+            fl_sweep_heap_pop(&c->heap);
+            continue;
+        }
+        if (top.base != c->travelled) { /* dirty (§5.1): recompute at this query */
+            fl_sweep_heap_pop(&c->heap);
+            visit(c, &st, top.node);
+            continue;
+        }
+        if (top.node < h->fine_count) {
+            answer_exact(h, top.node, st.q, r);
+            break;
+        }
+        double lower = top.key - c->travelled;
+        if (tol > 0 && st.upper - lower <= tol) {
+            answer_interval(h, &st, lower, r);
+            break;
+        }
+        fl_sweep_heap_pop(&c->heap);
+        refine(c, &st, h->tri[top.node].creator);
+    }
+    if (c->reset_cost == SIZE_MAX) c->reset_cost = st.visited;
+    c->last_cost = st.visited;
+    c->last_distance = r->distance;
+    r->reused = 0;
+    r->visited = st.visited;
+}
+
+fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
+                                       fl_sweep_collapse_cursor **out, fl_error *err)
+{
+    if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "output pointer is NULL");
+    *out = NULL;
+    if (!hierarchy) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "collapse hierarchy is NULL");
+    fl_sweep_collapse_cursor *c = calloc(1, sizeof *c);
+    size_t ns = hierarchy->split_count ? hierarchy->split_count : 1;
+    if (c) {
+        c->h = hierarchy;
+        c->heap.e = fl_alloc_array(hierarchy->tri_count, sizeof *c->heap.e);
+        c->done = calloc(ns, 1);
+        c->done_list = fl_alloc_array(ns, sizeof *c->done_list);
+        c->stack = fl_alloc_array(ns, sizeof *c->stack);
+    }
+    if (!c || !c->heap.e || !c->done || !c->done_list || !c->stack) {
+        fl_sweep_collapse_cursor_free(c);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a collapse cursor");
+    }
+    *out = c;
+    return FL_OK;
+}
+
+void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor)
+{
+    if (!cursor) return;
+    free(cursor->heap.e);
+    free(cursor->done);
+    free(cursor->done_list);
+    free(cursor->stack);
+    free(cursor);
+}
+
+fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
+                                           double tolerance, fl_closest *result, fl_error *err)
+{
+    if (!cursor || !q || !result)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and result must not be NULL");
+    if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
+    for (int i = 0; i < 3; i++)
+        if (!fl_sweep_coord_ok(q[i]))
+            return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
+    collapse_query(cursor, q, tolerance, result);
+    return FL_OK;
+}
+
+fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const double *q, size_t nq,
+                                    double tolerance, fl_closest *results, fl_error *err)
+{
+    if (nq == 0) return FL_OK;
+    if (!q || !results)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "queries and results must not be NULL");
+    fl_sweep_collapse_cursor *c;
+    fl_status st = fl_sweep_collapse_cursor_new(hierarchy, &c, err);
+    for (size_t i = 0; i < nq && st == FL_OK; i++)
+        st = fl_sweep_collapse_cursor_closest(c, q + 3 * i, tolerance, results + i, err);
+    fl_sweep_collapse_cursor_free(c);
+    return st;
+}
+
+fl_status fl_sweep_collapse_info_get(const fl_sweep_collapse *hierarchy,
+                                     fl_sweep_collapse_info *info, fl_error *err)
+{
+    if (!hierarchy || !info)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "hierarchy and info must not be NULL");
+    const fl_sweep_collapse *h = hierarchy;
+    size_t ns = h->split_count ? h->split_count : 1;
+    info->fine_triangles = h->fine_count;
+    info->base_triangles = h->base_count;
+    info->splits = h->split_count;
+    info->triangles = h->tri_count;
+    info->bytes = fl_collapse_bytes(h);
+    info->cursor_bytes = sizeof(fl_sweep_collapse_cursor) + h->tri_count * sizeof(fl_sweep_entry) +
+                         ns * (1 + 2 * sizeof(uint32_t));
+    return FL_OK;
+}

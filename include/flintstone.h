@@ -1823,7 +1823,7 @@ typedef struct fl_skin_approx_options {
     void *progress_user;
     int placement;      /* fl_skin_placement; 0 (Algorithm 1) is the default */
     double grade;       /* mesher: 0 means the uniform grid, then (same balls) the graded grid
-                         * of grade 1.4 (x0.6 a later round) when the topology came out wrong;
+                         * of grade 2.2 (x0.6 a later round) when the topology came out wrong;
                          * > 0 the graded grid of this grade only (fl_skin_options.grade, cells
                          * at most `cell`); < 0 the uniform grid only */
 } fl_skin_approx_options;

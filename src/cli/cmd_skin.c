@@ -11,8 +11,10 @@
 #include "core/core.h"
 
 static const char *usage_text =
-    "usage: flintstone skin --balls BALLS [--t T] [--cell H] [-o SKIN.off] [--json] [--quiet]\n"
-    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [--placement P] [--star B]\n"
+    "usage: flintstone skin --balls BALLS [--t T] [--cell H] [--grade G] [-o SKIN.off] [--json]\n"
+    "       [--quiet]\n"
+    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [--grade G] [--placement P]\n"
+    "       [--star B]\n"
     "       [-o SKIN.off] [--json]\n"
     "\n"
     "Triangulates the skin surface skin^t(B) of a ball set: the boundary of the union of the\n"
@@ -33,10 +35,13 @@ static const char *usage_text =
     "               the orthogonal balls of alpha simplices), readable by --balls\n"
     "  --cell H     grid spacing (default: sqrt(t) times the smallest radius / 4, smaller for\n"
     "               thin necks; with MESH: 0.4 E); features thinner than H can be missed\n"
+    "  --grade G    graded grid: octree cells of G times the local feature size of the skin\n"
+    "               (shrunk radius, neck waist), at most H; Delaunay tetrahedra, crack-free.\n"
+    "               With MESH: default uniform, then graded 2.2 when the topology is wrong\n"
     "  -o FILE      the mesh (.off .obj .ply .stl)\n"
     "  --json       --balls: balls, vertices, faces, euler, genus, closed, manifold, cell,\n"
     "               max_vertex_offset, seconds; MESH: balls (|B*|), faces, euler,\n"
-    "               euler_input, epsilon, hausdorff_upper, rounds, cell, seconds\n"
+    "               euler_input, epsilon, hausdorff_upper, rounds, cell, grade, seconds\n"
     "\n"
     "example: flintstone skin --balls balls.xyzw --t 0.5 -o skin.off --json\n"
     "example: flintstone skin cube.off --epsilon 0.5 -o skin.off --json\n";

@@ -14,7 +14,7 @@
 /* gamma of Algorithm 1 (§4.2): radii below gamma lgs, 0 < gamma < 1/2 */
 #define SKIN_GAMMA 0.45
 /* default mesher grade of the approximation (fl_skin_approx_options.grade) */
-#define SKIN_GRADE 1.4
+#define SKIN_GRADE 2.2
 
 void fl_skin_approx_free(fl_skin_approx *a)
 {
@@ -158,8 +158,8 @@ fl_status fl_skin_approx_build(const fl_mesh *mesh, double epsilon,
     double rho = 0.8 * epsilon, cell_factor = 0.5;
     /* The graded grid (skin_graded.c) resolves the thin skin between the small protecting
      * balls near sharp vertices that the uniform grid of cell rho / 2 cut (the tetrahedron at
-     * eps 0.15: Euler 0 after 3 uniform rounds, 2 in one graded round at grade 1.4, measured
-     * in docs/skin.md). */
+     * eps 0.15: Euler 0 after 3 uniform rounds, 2 in one graded round at grades 1.4 to 3.5;
+     * docs/skin.md). */
     double grade = o.grade > 0 ? o.grade : SKIN_GRADE;
     for (int r = 0; r < o.max_rounds; r++) {
         if (r > 0) {

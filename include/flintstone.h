@@ -1757,9 +1757,14 @@ typedef struct fl_skin_options {
     double t;          /* shrink factor in (0, 1); 0 means 0.5 */
     double cell;       /* grid spacing; 0 means sqrt(t) * (smallest positive radius) / 4,
                         * smaller (down to 1/4 of that) to straddle thin necks (docs/skin.md) */
-    size_t max_cubes;  /* refuse grids with more candidate cubes than this; 0 means 5e7 (about 16 bytes a cube) */
+    size_t max_cubes;  /* refuse grids with more candidate cubes than this; 0 means 5e7 (about 16 bytes a cube);
+                        * graded: more octree leaves than this, 0 means 3e6 */
     fl_progress_fn progress; /* may be NULL; stage "skin" */
     void *progress_user;
+    double grade;      /* 0: the uniform grid above. > 0: a graded grid (octree corners,
+                        * Delaunay tetrahedra): cells of grade times the local feature size of
+                        * the skin (shrunk ball radius, neck waist, ...), at most `cell` (0: the
+                        * largest shrunk radius times grade); docs/skin.md */
 } fl_skin_options;
 
 /* What fl_skin_mesh measured (optional). */
@@ -1817,6 +1822,10 @@ typedef struct fl_skin_approx_options {
     fl_progress_fn progress; /* may be NULL; stages "skin balls", "skin", "hausdorff" */
     void *progress_user;
     int placement;      /* fl_skin_placement; 0 (Algorithm 1) is the default */
+    double grade;       /* mesher: 0 means the uniform grid, then (same balls) the graded grid
+                         * of grade 2.2 (x0.6 a later round) when the topology came out wrong;
+                         * > 0 the graded grid of this grade only (fl_skin_options.grade, cells
+                         * at most `cell`); < 0 the uniform grid only */
 } fl_skin_approx_options;
 
 /* The result of fl_skin_approx. Free with fl_skin_approx_free. */
@@ -1828,6 +1837,7 @@ typedef struct fl_skin_approx {
     fl_mesh skin;          /* triangulation of skin^t(B*) (fl_skin_mesh) */
     double rho;            /* radius of the surface balls of the last round */
     double t, cell;        /* shrink factor and grid spacing of the skin mesh */
+    double grade;          /* grade of the graded grid that made the skin mesh, 0 if uniform */
     double hausdorff[2];   /* certified [lower, upper] Hausdorff distance skin mesh <-> input */
     long long euler;       /* Euler characteristic of the skin mesh */
     long long euler_input; /* Euler characteristic of the input */

@@ -83,4 +83,17 @@ double skin_value_scan(const fl_skin_function *skin, const double x[3]);
 int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell);
 /* end of mixed-cell point location */
 
+
+/* A zero of G on the segment a -> b, G(a) < 0 <= G(b), to rounding (skin_mesh.c); adds the
+ * evaluations of G to *evaluations. */
+void skin_edge_root(const fl_skin_function *g, const double a[3], const double b[3], double x[3],
+                    size_t *evaluations);
+
+/* The graded mesher (skin_graded.c): marching tetrahedra on the Delaunay tetrahedralization of
+ * the corners of an octree refined by the local feature size of the skin. Same contract as the
+ * uniform path of fl_skin_mesh; g is the skin function of the balls, o->cell (> 0) the largest
+ * cell. Fills out and the grid fields of stats (cell = the smallest leaf, cubes = leaves). */
+fl_status skin_graded_mesh(const fl_skin_function *g, const double *xyzw, size_t n,
+                           const fl_skin_options *o, fl_mesh *out, fl_skin_stats *stats,
+                           fl_error *err);
 #endif

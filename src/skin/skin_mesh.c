@@ -17,87 +17,10 @@
 
 #include "core/core.h"
 #include "skin/skin_internal.h"
+#include "skin/skin_map.h"
 
 #define AXIS_BITS 20
 #define AXIS_MAX ((uint64_t)1 << AXIS_BITS)
-
-/* ---- a uint64 -> uint32 hash map (linear probing, keys != UINT64_MAX) ---- */
-
-typedef struct u64map {
-    uint64_t *key;
-    uint32_t *val;
-    size_t cap, count;
-} u64map;
-
-static uint64_t mix64(uint64_t x)
-{
-    x ^= x >> 33;
-    x *= 0xff51afd7ed558ccdULL;
-    x ^= x >> 33;
-    x *= 0xc4ceb9fe1a85ec53ULL;
-    return x ^ (x >> 33);
-}
-
-static int map_init(u64map *m, size_t cap)
-{
-    m->cap = 16;
-    while (m->cap < 2 * cap)
-        m->cap *= 2;
-    m->count = 0;
-    m->key = fl_alloc_array(m->cap, sizeof(uint64_t));
-    m->val = fl_alloc_array(m->cap, sizeof(uint32_t));
-    if (!m->key || !m->val) return -1;
-    memset(m->key, 0xff, m->cap * sizeof(uint64_t));
-    return 0;
-}
-
-static void map_free(u64map *m)
-{
-    free(m->key);
-    free(m->val);
-    memset(m, 0, sizeof *m);
-}
-
-/* The slot of key: holding it, or the empty slot where it belongs. */
-static size_t map_slot(const u64map *m, uint64_t key)
-{
-    size_t i = (size_t)mix64(key) & (m->cap - 1);
-    while (m->key[i] != UINT64_MAX && m->key[i] != key)
-        i = (i + 1) & (m->cap - 1);
-    return i;
-}
-
-static int map_grow(u64map *m)
-{
-    u64map g = {0};
-    if (m->cap > SIZE_MAX / 4 || map_init(&g, m->cap)) {
-        map_free(&g);
-        return -1;
-    }
-    for (size_t i = 0; i < m->cap; i++)
-        if (m->key[i] != UINT64_MAX) {
-            size_t s = map_slot(&g, m->key[i]);
-            g.key[s] = m->key[i];
-            g.val[s] = m->val[i];
-        }
-    g.count = m->count;
-    map_free(m);
-    *m = g;
-    return 0;
-}
-
-/* Inserts key -> val when absent. Returns the slot, or SIZE_MAX on allocation failure. */
-static size_t map_put(u64map *m, uint64_t key, uint32_t val)
-{
-    if (2 * (m->count + 1) > m->cap && map_grow(m)) return SIZE_MAX;
-    size_t s = map_slot(m, key);
-    if (m->key[s] == UINT64_MAX) {
-        m->key[s] = key;
-        m->val[s] = val;
-        m->count++;
-    }
-    return s;
-}
 
 /* ---- the marching state ---- */
 
@@ -140,23 +63,17 @@ static int label(marcher *m, const uint64_t p[3])
     return map_put(&m->label, key, (uint32_t)in) == SIZE_MAX ? -1 : in;
 }
 
-/* The vertex on grid edge p -> p + dir (dir a nonzero 0/1 vector, bits x=1 y=2 z=4): a zero
- * of G between the edge's inside and outside end, found by the Illinois variant of regula
- * falsi (G is smooth along the edge, so it converges superlinearly) with a bisection step
- * whenever a step shrinks the bracket by less than half; it stops when the bracket no longer
- * shrinks, so the vertex is within a rounding error of the skin. Returns UINT32_MAX on
- * allocation failure. */
-static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p_inside)
+/* A zero of G on the segment a -> b with G(a) < 0 <= G(b), written to x: the Illinois variant
+ * of regula falsi (G is smooth along the segment, so it converges superlinearly) with a
+ * bisection step whenever a step shrinks the bracket by less than half; it stops when the
+ * bracket no longer shrinks, so x is within a rounding error of the skin. Adds the evaluations
+ * of G to *evaluations. Shared by both meshers (skin_internal.h). */
+void skin_edge_root(const fl_skin_function *g, const double a[3], const double b[3], double x[3],
+                    size_t *evaluations)
 {
-    uint64_t key = pack(p) << 3 | dir;
-    size_t s = map_slot(&m->vert, key);
-    if (m->vert.key[s] == key) return m->vert.val[s];
-    uint64_t q[3] = {p[0] + (dir & 1), p[1] + (dir >> 1 & 1), p[2] + (dir >> 2 & 1)};
-    double a[3], b[3], x[3];
-    grid_point(m, p_inside ? p : q, a);
-    grid_point(m, p_inside ? q : p, b);
     /* parameter s in [lo, hi] along a -> b; G(lo) < 0 <= G(hi) */
-    double lo = 0, hi = 1, glo = eval(m, a), ghi = eval(m, b);
+    double lo = 0, hi = 1, glo = fl_skin_function_value(g, a), ghi = fl_skin_function_value(g, b);
+    size_t ev = 2;
     int side = 0;
     for (int it = 0; it < 200 && glo < 0 && ghi > 0; it++) {
         double width = hi - lo;
@@ -164,7 +81,8 @@ static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p
         if (!(s_new > lo && s_new < hi)) s_new = 0.5 * (lo + hi);
         for (int c = 0; c < 3; c++)
             x[c] = a[c] + s_new * (b[c] - a[c]);
-        double gx = eval(m, x);
+        double gx = fl_skin_function_value(g, x);
+        ev++;
         if (gx < 0) {
             lo = s_new;
             glo = gx;
@@ -181,7 +99,8 @@ static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p
             if (mid <= lo || mid >= hi) break;
             for (int c = 0; c < 3; c++)
                 x[c] = a[c] + mid * (b[c] - a[c]);
-            double gm = eval(m, x);
+            double gm = fl_skin_function_value(g, x);
+            ev++;
             if (gm < 0) {
                 lo = mid;
                 glo = gm;
@@ -199,9 +118,25 @@ static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p
         xl[c] = a[c] + lo * (b[c] - a[c]);
         xh[c] = a[c] + hi * (b[c] - a[c]);
     }
-    double gl = fabs(eval(m, xl)), gh = fabs(eval(m, xh));
+    double gl = fabs(fl_skin_function_value(g, xl)), gh = fabs(fl_skin_function_value(g, xh));
+    *evaluations += ev + 2;
+    memcpy(x, gl <= gh ? xl : xh, sizeof(xl));
+}
+
+/* The vertex on grid edge p -> p + dir (dir a nonzero 0/1 vector, bits x=1 y=2 z=4), placed by
+ * skin_edge_root. Returns UINT32_MAX on allocation failure. */
+static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p_inside)
+{
+    uint64_t key = pack(p) << 3 | dir;
+    size_t s = map_slot(&m->vert, key);
+    if (m->vert.key[s] == key) return m->vert.val[s];
+    uint64_t q[3] = {p[0] + (dir & 1), p[1] + (dir >> 1 & 1), p[2] + (dir >> 2 & 1)};
+    double a[3], b[3], x[3];
+    grid_point(m, p_inside ? p : q, a);
+    grid_point(m, p_inside ? q : p, b);
+    skin_edge_root(m->g, a, b, x, &m->evaluations);
     uint32_t v = (uint32_t)m->xyz.count;
-    if (fl_vec_push(&m->xyz, gl <= gh ? xl : xh, 1)) return UINT32_MAX;
+    if (fl_vec_push(&m->xyz, x, 1)) return UINT32_MAX;
     return map_put(&m->vert, key, v) == SIZE_MAX ? UINT32_MAX : v;
 }
 
@@ -486,12 +421,11 @@ static fl_status setup_grid(marcher *m, const double *xyzw, size_t n, double t, 
     return FL_OK;
 }
 
-/* max over the vertices of |G(v)| / |grad G(v)| (central differences). */
-static double vertex_offset(marcher *m)
+/* max over the vertices of |G(v)| / |grad G(v)| (central differences at step 1e-5 h). */
+static double vertex_offset(marcher *m, const double *x, size_t count, double h)
 {
-    const double *x = m->xyz.data;
-    double worst = 0, d = 1e-5 * m->h;
-    for (size_t i = 0; i < m->xyz.count; i++) {
+    double worst = 0, d = 1e-5 * h;
+    for (size_t i = 0; i < count; i++) {
         const double *v = x + 3 * i;
         double g2 = 0;
         for (int c = 0; c < 3; c++) {
@@ -526,6 +460,44 @@ static fl_status march_all(marcher *m, const fl_vec *cubes, const fl_skin_option
     return FL_OK;
 }
 
+/* The graded path (skin_graded.c) with the checks of the uniform one. */
+static fl_status graded(const double *xyzw, size_t n, const fl_skin_options *o, fl_mesh *out,
+                        fl_skin_stats *stats, fl_error *err)
+{
+    fl_skin_function *g = NULL;
+    fl_status st = fl_skin_function_new(xyzw, n, o->t, &g, err);
+    if (st != FL_OK) return st;
+    fl_skin_options go = *o;
+    double rmax = 0, cmax = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (xyzw[4 * i + 3] > 0) rmax = fmax(rmax, sqrt(xyzw[4 * i + 3]));
+        for (int c = 0; c < 3; c++)
+            cmax = fmax(cmax, fabs(xyzw[4 * i + c]));
+    }
+    if (go.cell == 0) go.cell = go.grade * sqrt(go.t) * rmax;
+    fl_skin_stats gs = {0};
+    st = skin_graded_mesh(g, xyzw, n, &go, out, &gs, err);
+    /* leaves below the coordinates' resolution make points coincide (see fl_skin_mesh) */
+    if (!st && !(gs.cell >= 1e-12 * cmax)) {
+        fl_mesh_free(out);
+        st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                     "skin: graded cell %g is below the resolution of the coordinates (a ball "
+                     "too small for its position)",
+                     gs.cell);
+    }
+    if (!st && stats) {
+        marcher m;
+        memset(&m, 0, sizeof m);
+        m.g = g;
+        *stats = gs;
+        stats->max_vertex_offset = vertex_offset(&m, out->xyz, out->vertex_count, gs.cell);
+        stats->evaluations += m.evaluations;
+    }
+    fl_skin_function_free(g);
+    if (st) memset(out, 0, sizeof *out);
+    return st;
+}
+
 fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
                        fl_skin_stats *stats, fl_error *err)
 {
@@ -535,9 +507,11 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
     fl_skin_options o = {0};
     if (opt) o = *opt;
     if (o.t == 0) o.t = 0.5;
-    if (o.max_cubes == 0) o.max_cubes = 50000000;
-    if (!(o.cell >= 0) || !isfinite(o.cell))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "skin: cell must be a finite number >= 0");
+    if (o.max_cubes == 0) o.max_cubes = o.grade > 0 ? 3000000 : 50000000;
+    if (!(o.cell >= 0) || !isfinite(o.cell) || !(o.grade >= 0) || !isfinite(o.grade))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1,
+                       "skin: cell and grade must be finite numbers >= 0");
+    if (o.grade > 0) return graded(xyzw, n, &o, out, stats, err);
     marcher m;
     memset(&m, 0, sizeof m);
     fl_vec_init(&m.xyz, 3 * sizeof(double));
@@ -566,7 +540,7 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
     if (!st && stats) {
         stats->cell = m.h;
         stats->cubes = cubes.count;
-        stats->max_vertex_offset = vertex_offset(&m);
+        stats->max_vertex_offset = vertex_offset(&m, m.xyz.data, m.xyz.count, m.h);
         stats->evaluations = m.evaluations;
     }
     if (!st) {

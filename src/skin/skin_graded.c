@@ -1,0 +1,378 @@
+/* The graded skin mesher: marching tetrahedra on the Delaunay tetrahedralization of the corners
+ * of an octree whose leaves are small only where the skin has small features.
+ *
+ * Why: the skin of the eps-approximation's B* (Cheng & Tan §6.2) has parts of very different
+ * sizes: near a sharp vertex of the polyhedron the protecting balls shrink with the local gap
+ * size (§4, lgs -> 0) and the skin between them is as thin as they are, while the interior
+ * balls of B_perp are large. A uniform grid fine enough for the smallest balls is too large;
+ * one coarse enough to be affordable cut the thin parts (the tetrahedron at eps 0.15,
+ * docs/skin.md).
+ *
+ * Why the result is a closed 2-manifold for every input, with no crack between leaves of
+ * different sizes: the octree only supplies points; the Delaunay tetrahedralization (fl_dt3,
+ * exact, symbolic tie-breaking) is one conforming triangulation of their convex hull, the root
+ * cube. Each point gets one label (G < 0 or not), so the output is the level set of a
+ * piecewise-linear interpolant at a regular value (as in the uniform mesher, skin_mesh.c),
+ * and the root cube's boundary lies outside every ball, hence outside the body
+ * (body^t ⊂ ∪B, §6.1), so the level set does not reach the hull. Hanging nodes do not matter:
+ * nothing is interpolated on octree faces.
+ *
+ * Local size: every simplex X of the regular triangulation whose focus f lies in X contributes
+ * a feature at f of size sqrt(min(t, 1 - t) |w_X|), w_X the weight of its orthogonal ball: by
+ * the quadric of the mixed cell (docs/skin.md, G = |q|^2 - t/(1-t) |p|^2 + t w_X) that is the
+ * shrunk radius sqrt(t w) of a ball (X a vertex), the waist of a neck (an edge, w_X < 0), the
+ * half-thickness of a membrane (a triangle) and the radius of a spherical cavity (a
+ * tetrahedron, w_X > 0). The wanted cell near a feature is `grade` times its size, growing by
+ * half the distance away from it (a 1/2-Lipschitz size function keeps neighbouring leaves of
+ * similar size, so the Delaunay tetrahedra stay reasonable). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/core.h"
+#include "skin/skin_internal.h"
+#include "skin/skin_map.h"
+
+#define OCT_DEPTH 19     /* leaves down to root / 2^19; corners fit 20 bits an axis */
+#define OCT_BITS 21      /* bits an axis in a packed corner key */
+#define GRADE_SLOPE 0.5  /* the size function grows by this times the distance */
+#define FOCUS_SLACK 1e-9 /* barycentric slack of "the focus lies in X" */
+
+/* A feature: the ball (c, r) (r = 0 for a point) wanting cells of size h within it. */
+typedef struct size_src {
+    double c[3], r, h;
+} size_src;
+
+typedef struct octree {
+    double origin[3], root;
+    const size_src *src;
+    fl_vec stack; /* uint32_t source indices: the current cell's forcing sources, then its
+                     children's */
+    u64map corner;
+    fl_vec pts; /* double[3] per corner */
+    size_t leaves, max_leaves;
+    double hsmall; /* the smallest leaf */
+} octree;
+
+/* Distance from the box [lo, lo + L]^3 to the ball of s (0 when they meet). */
+static double box_ball_dist(const double lo[3], double L, const size_src *s)
+{
+    double d2 = 0;
+    for (int c = 0; c < 3; c++) {
+        double e = fmax(fmax(lo[c] - s->c[c], s->c[c] - lo[c] - L), 0);
+        d2 += e * e;
+    }
+    return fmax(sqrt(d2) - s->r, 0);
+}
+
+static uint64_t corner_key(uint64_t i, uint64_t j, uint64_t k)
+{
+    return (k << (2 * OCT_BITS)) | (j << OCT_BITS) | i;
+}
+
+/* Registers the 8 corners of a leaf at level `depth` with integer position (i, j, k). */
+static fl_status add_leaf(octree *o, int depth, const uint64_t ijk[3], fl_error *err)
+{
+    int sh = OCT_DEPTH - depth;
+    double unit = o->root / (double)((uint64_t)1 << OCT_DEPTH);
+    o->hsmall = fmin(o->hsmall, o->root / (double)((uint64_t)1 << depth));
+    if (++o->leaves > o->max_leaves)
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                       "skin: the graded grid would have more than %zu leaves; choose a larger "
+                       "cell or grade",
+                       o->max_leaves);
+    for (unsigned b = 0; b < 8; b++) {
+        uint64_t q[3];
+        for (int c = 0; c < 3; c++)
+            q[c] = (ijk[c] + (b >> c & 1)) << sh;
+        uint64_t key = corner_key(q[0], q[1], q[2]);
+        size_t s = map_slot(&o->corner, key);
+        if (o->corner.key[s] == key) continue;
+        double x[3];
+        for (int c = 0; c < 3; c++)
+            x[c] = o->origin[c] + unit * (double)q[c];
+        if (fl_vec_push(&o->pts, x, 1) ||
+            map_put(&o->corner, key, (uint32_t)(o->pts.count - 1)) == SIZE_MAX)
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+        if (o->pts.count >= UINT32_MAX - 8)
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: more than 2^32 grid points");
+    }
+    return FL_OK;
+}
+
+/* The cell at level depth, position ijk, whose forcing sources are stack[off, off + cnt):
+ * a leaf when none forces it, else split, each child keeping the sources that force it
+ * (a source that does not force a cell forces none of its children: they are nearer to it by
+ * no more and want a cell half as large). */
+static fl_status refine(octree *o, int depth, const uint64_t ijk[3], size_t off, size_t cnt,
+                        fl_error *err)
+{
+    if (cnt == 0 || depth == OCT_DEPTH) return add_leaf(o, depth, ijk, err);
+    double half = o->root / (double)((uint64_t)1 << (depth + 1));
+    for (unsigned b = 0; b < 8; b++) {
+        uint64_t q[3];
+        double lo[3];
+        for (int c = 0; c < 3; c++) {
+            q[c] = 2 * ijk[c] + (b >> c & 1);
+            lo[c] = o->origin[c] + half * (double)q[c];
+        }
+        size_t top = off + cnt, kept = 0;
+        o->stack.count = top;
+        for (size_t i = 0; i < cnt; i++) {
+            uint32_t id = ((const uint32_t *)o->stack.data)[off + i];
+            const size_src *s = &o->src[id];
+            if (!(s->h + GRADE_SLOPE * box_ball_dist(lo, half, s) < half)) continue;
+            if (fl_vec_push(&o->stack, &id, 1))
+                return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+            kept++;
+        }
+        fl_status st = refine(o, depth + 1, q, top, kept, err);
+        if (st != FL_OK) return st;
+    }
+    return FL_OK;
+}
+
+/* 1 when the focus of X lies in the closed simplex X (mu_f are its barycentric coordinates
+ * beyond the first vertex). */
+static int focus_inside(const skin_simplex *s)
+{
+    double sum = 0;
+    for (int j = 0; j < s->k; j++) {
+        if (!(s->mu_f[j] >= -FOCUS_SLACK)) return 0;
+        sum += s->mu_f[j];
+    }
+    return sum <= 1 + FOCUS_SLACK;
+}
+
+/* The features (header comment): every positive ball, and the simplices with a positive ball
+ * whose focus lies in them. Sizes are capped at hmax and floored at a sixteenth of the
+ * smallest ball's, so one near-tangent pair (|w_X| -> 0) cannot blow the tree up. */
+static fl_status make_sources(const fl_skin_function *g, const double *xyzw, size_t n, double t,
+                              double grade, double hmax, fl_vec *src, fl_error *err)
+{
+    double hmin = HUGE_VAL;
+    for (size_t i = 0; i < n; i++) {
+        const double *b = xyzw + 4 * i;
+        if (!(b[3] > 0)) continue;
+        size_src s = {{b[0], b[1], b[2]}, sqrt(b[3]), fmin(hmax, grade * sqrt(t * b[3]))};
+        hmin = fmin(hmin, s.h);
+        if (fl_vec_push(src, &s, 1))
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    }
+    double floor_h = hmin / 16, mt = fmin(t, 1 - t);
+    for (size_t i = 0; i < g->simplex_count; i++) {
+        const skin_simplex *x = &g->simplex[i];
+        if (x->k == 0 || !(x->reach > 0) || !focus_inside(x)) continue;
+        double a = fabs(x->w);
+        size_src s = {{x->f[0], x->f[1], x->f[2]}, sqrt(a), grade * sqrt(mt * a)};
+        s.h = fmin(hmax, fmax(s.h, floor_h));
+        if (!isfinite(s.h) || !isfinite(s.r)) continue;
+        if (fl_vec_push(src, &s, 1))
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    }
+    return FL_OK;
+}
+
+/* The octree's points: root cube around the positive balls' box with a margin of hmax, grid
+ * offset by an odd fraction as in skin_mesh.c (setup_grid) so round inputs do not put points
+ * on the skin. */
+static fl_status build_points(octree *o, const double *xyzw, size_t n, const fl_vec *src,
+                              double hmax, fl_error *err)
+{
+    double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (size_t i = 0; i < n; i++) {
+        const double *b = xyzw + 4 * i;
+        if (!(b[3] > 0)) continue;
+        double r = sqrt(b[3]);
+        for (int c = 0; c < 3; c++) {
+            lo[c] = fmin(lo[c], b[c] - r);
+            hi[c] = fmax(hi[c], b[c] + r);
+        }
+    }
+    double side = 0;
+    for (int c = 0; c < 3; c++)
+        side = fmax(side, hi[c] - lo[c]);
+    o->root = side + 2.6 * hmax;
+    for (int c = 0; c < 3; c++)
+        o->origin[c] = lo[c] - (1 + 0.3183098861837907 * (c + 1) / 3) * hmax;
+    o->src = src->data;
+    o->hsmall = HUGE_VAL;
+    size_t est = o->max_leaves < 4096 ? 4096 : o->max_leaves / 64;
+    if (map_init(&o->corner, est))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    for (size_t i = 0; i < src->count; i++) { /* the root is forced by every source */
+        uint32_t id = (uint32_t)i;
+        if (fl_vec_push(&o->stack, &id, 1))
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    }
+    const uint64_t zero[3] = {0, 0, 0};
+    return refine(o, 0, zero, 0, src->count, err);
+}
+
+/* ---- marching tetrahedra on the Delaunay tetrahedra ---- */
+
+typedef struct dmarch {
+    const fl_skin_function *g;
+    const double *p;
+    const uint8_t *in;
+    u64map vert; /* edge (lo index << 32 | hi index) -> vertex */
+    fl_vec xyz, tri;
+    size_t evaluations;
+} dmarch;
+
+static uint32_t dedge_vertex(dmarch *m, uint32_t a, uint32_t b)
+{
+    uint64_t key = a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
+    size_t s = map_slot(&m->vert, key);
+    if (m->vert.key[s] == key) return m->vert.val[s];
+    uint32_t ins = m->in[a] ? a : b, outs = m->in[a] ? b : a;
+    double x[3];
+    skin_edge_root(m->g, m->p + 3 * (size_t)ins, m->p + 3 * (size_t)outs, x, &m->evaluations);
+    uint32_t v = (uint32_t)m->xyz.count;
+    if (fl_vec_push(&m->xyz, x, 1)) return UINT32_MAX;
+    return map_put(&m->vert, key, v) == SIZE_MAX ? UINT32_MAX : v;
+}
+
+/* Triangle (v0, v1, v2), reversed when flip. */
+static int dpush(dmarch *m, uint32_t v0, uint32_t v1, uint32_t v2, int flip)
+{
+    uint32_t t[3] = {v0, flip ? v2 : v1, flip ? v1 : v2};
+    return fl_vec_push(&m->tri, t, 1);
+}
+
+/* One tetrahedron with corners c[4] (point indices). Orientation without arithmetic on the
+ * vertices: with a the lone corner (one vs three) or an inside corner (two vs two) and b, c, d
+ * ordered as below, the triangle (ab, ac, ad) resp. the quad (ac, ad, bd, bc) has its normal
+ * n with n.(a - plane) = -det[b - a, c - a, d - a] / 8 at the edge midpoints (expand the
+ * cross product), and moving the vertices along their edges keeps the combinatorics. The
+ * normal must point away from the inside, and det[b - a, c - a, d - a] =
+ * -fl_orient3d(a, b, c, d), decided exactly. */
+static int dmarch_tet(dmarch *m, const uint32_t *c)
+{
+    int ins[4], outs[4], ni = 0, no = 0;
+    for (int i = 0; i < 4; i++) {
+        if (m->in[c[i]])
+            ins[ni++] = i;
+        else
+            outs[no++] = i;
+    }
+    if (ni == 0 || no == 0) return 0;
+    uint32_t a, b, cc, d;
+    int a_inside;
+    if (ni == 1 || no == 1) {
+        const int *lone = ni == 1 ? ins : outs, *rest = ni == 1 ? outs : ins;
+        a = c[lone[0]], b = c[rest[0]], cc = c[rest[1]], d = c[rest[2]];
+        a_inside = ni == 1;
+    } else {
+        a = c[ins[0]], b = c[ins[1]], cc = c[outs[0]], d = c[outs[1]];
+        a_inside = 1;
+    }
+    int o = fl_orient3d(m->p + 3 * (size_t)a, m->p + 3 * (size_t)b, m->p + 3 * (size_t)cc,
+                        m->p + 3 * (size_t)d);
+    /* keep the order when the normal points away from an inside a (det > 0, o < 0) or towards
+     * an outside a (o > 0) */
+    int flip = a_inside ? o > 0 : o < 0;
+    if (ni == 1 || no == 1) {
+        uint32_t v0 = dedge_vertex(m, a, b), v1 = dedge_vertex(m, a, cc),
+                 v2 = dedge_vertex(m, a, d);
+        if (v0 == UINT32_MAX || v1 == UINT32_MAX || v2 == UINT32_MAX) return -1;
+        return dpush(m, v0, v1, v2, flip);
+    }
+    uint32_t v[4] = {dedge_vertex(m, a, cc), dedge_vertex(m, a, d), dedge_vertex(m, b, d),
+                     dedge_vertex(m, b, cc)};
+    for (int i = 0; i < 4; i++)
+        if (v[i] == UINT32_MAX) return -1;
+    if (dpush(m, v[0], v[1], v[2], flip)) return -1;
+    return dpush(m, v[0], v[2], v[3], flip);
+}
+
+static fl_status march_delaunay(dmarch *m, const fl_dt3 *dt, const fl_skin_options *o,
+                                fl_error *err)
+{
+    if (map_init(&m->vert, dt->tet_count / 8 + 64))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    for (size_t i = 0; i < dt->tet_count; i++) {
+        if ((i & 16383) == 0 && fl_progress(o->progress, o->progress_user, "skin",
+                                            0.5 + 0.5 * (double)i / (double)dt->tet_count))
+            return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+        if (dmarch_tet(m, dt->tet + 4 * i))
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+        if (m->xyz.count >= UINT32_MAX - 8)
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: more than 2^32 vertices");
+    }
+    return FL_OK;
+}
+
+/* Labels every point (G < 0), then marches. */
+static fl_status label_and_march(dmarch *m, const octree *ot, const fl_skin_options *o,
+                                 fl_error *err)
+{
+    fl_dt3 dt;
+    fl_dt3_options dopt = {0};
+    fl_status st = fl_dt3_build(ot->pts.data, ot->pts.count, &dopt, &dt, err);
+    if (st != FL_OK) return st;
+    uint8_t *in = fl_alloc_array(ot->pts.count, 1);
+    if (!in) {
+        fl_dt3_free(&dt);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    }
+    for (size_t i = 0; i < ot->pts.count; i++) {
+        if ((i & 16383) == 0 &&
+            fl_progress(o->progress, o->progress_user, "skin", 0.5 * (double)i / ot->pts.count)) {
+            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+            break;
+        }
+        in[i] = fl_skin_function_value(m->g, (const double *)ot->pts.data + 3 * i) < 0;
+    }
+    m->evaluations += ot->pts.count;
+    m->p = ot->pts.data;
+    m->in = in;
+    if (!st) st = march_delaunay(m, &dt, o, err);
+    free(in);
+    m->in = NULL;
+    fl_dt3_free(&dt);
+    return st;
+}
+
+fl_status skin_graded_mesh(const fl_skin_function *g, const double *xyzw, size_t n,
+                           const fl_skin_options *o, fl_mesh *out, fl_skin_stats *stats,
+                           fl_error *err)
+{
+    octree ot;
+    memset(&ot, 0, sizeof ot);
+    fl_vec_init(&ot.stack, sizeof(uint32_t));
+    fl_vec_init(&ot.pts, 3 * sizeof(double));
+    ot.max_leaves = o->max_cubes;
+    fl_vec src;
+    fl_vec_init(&src, sizeof(size_src));
+    dmarch m;
+    memset(&m, 0, sizeof m);
+    m.g = g;
+    fl_vec_init(&m.xyz, 3 * sizeof(double));
+    fl_vec_init(&m.tri, 3 * sizeof(uint32_t));
+    fl_status st = make_sources(g, xyzw, n, g->t, o->grade, o->cell, &src, err);
+    if (!st) st = build_points(&ot, xyzw, n, &src, o->cell, err);
+    fl_vec_free(&ot.stack);
+    map_free(&ot.corner);
+    fl_vec_free(&src);
+    if (!st) st = label_and_march(&m, &ot, o, err);
+    if (!st && m.tri.count == 0)
+        st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                     "skin: no grid point lies inside the skin; choose a finer grade or cell");
+    if (!st && stats) {
+        stats->cell = ot.hsmall;
+        stats->cubes = ot.leaves;
+        stats->evaluations = m.evaluations;
+    }
+    if (!st) {
+        out->vertex_count = m.xyz.count;
+        out->triangle_count = m.tri.count;
+        out->xyz = fl_vec_release(&m.xyz);
+        out->tri = fl_vec_release(&m.tri);
+    }
+    fl_vec_free(&ot.pts);
+    fl_vec_free(&m.xyz);
+    fl_vec_free(&m.tri);
+    map_free(&m.vert);
+    return st;
+}

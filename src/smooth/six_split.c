@@ -320,6 +320,17 @@ static int edge_solve(const edge_setup *q, double shift, double tol, double x0[6
 static double displacement(double x0[6][3], double x[6][3]);
 static double spoke_ratio(double lam, double x0[6][3], double x[6][3]);
 
+/* A solution is kept only near the subdivision values: the midpoint spokes within 1/4..4 of
+ * their subdivision length and no point moved more than half the edge length. sphere.off and
+ * elephant.off have edges whose only roots stretch the spokes 14-20000 times (sphere.off then
+ * bulges to 2900 mean edge lengths). */
+static int near_solution(const edge_setup *q, double x0[6][3], double x[6][3])
+{
+    double ab[3], sr = spoke_ratio(q->lam, x0, x);
+    g1_sub(q->B, q->A, ab);
+    return sr >= 0.25 && sr <= 4 && sqrt(displacement(x0, x)) <= 0.5 * g1_length(ab);
+}
+
 /* A rank-deficient edge (a mirror plane through the edge makes f = g on both halves, so the
  * equations see the two micro centres beside each half only through their sum: 4 unknown
  * points for 5 equations) is in general inconsistent with the multipliers taken from the
@@ -334,9 +345,8 @@ static double midpoint_multiplier_search(const edge_setup *q, double x0[6][3], d
 {
     enum { GRID = 40 };
     const double lo = -0.5, hi = 0.5, step = (hi - lo) / GRID, g = 0.6180339887498949;
-    double grid[GRID + 1], y[6][3], r, ab[3], best = res0, pick[6][3];
+    double grid[GRID + 1], y[6][3], r, best = res0, pick[6][3];
     int found = 0;
-    g1_sub(q->B, q->A, ab);
     for (int i = 0; i <= GRID; i++)
         if (edge_solve(q, lo + step * i, RANK_TOL, x0, y, &grid[i]) < 0) grid[i] = INFINITY;
     /* The residual can have several roots; refine around every grid minimum and keep the most
@@ -365,8 +375,7 @@ static double midpoint_multiplier_search(const edge_setup *q, double x0[6][3], d
         if (edge_solve(q, bt, 1e-24, x0, y, &r) == 5 && r < rz &&
             displacement(x0, y) <= 4 * displacement(x0, z))
             memcpy(z, y, sizeof y), rz = r;
-        double sr = spoke_ratio(q->lam, x0, z);
-        if (rz < best && sr >= 0.25 && sr <= 4 && sqrt(displacement(x0, z)) <= 0.5 * g1_length(ab))
+        if (rz < best && near_solution(q, x0, z))
             memcpy(pick, z, sizeof z), best = rz, found = 1;
     }
     if (found) memcpy(x, pick, sizeof pick);
@@ -532,6 +541,14 @@ static int edge_at_ratio(const edge_ctx *c, double lam, double x[6][3], double *
     return rank;
 }
 
+/* near_solution for x solved at split ratio lam. */
+static int near_at_ratio(const edge_ctx *c, double lam, double x[6][3])
+{
+    edge_setup q;
+    double x0[6][3];
+    return edge_prepare(c, lam, &q, x0) && near_solution(&q, x0, x);
+}
+
 /* Where no midpoint multiplier makes a rank-deficient edge consistent at lam = 1/2 (the twice
  * subdivided icosahedron, sphere.off: the residual over the shift has a positive minimum, its
  * three coordinates vanish at different shifts), the split ratio lam of the macro edge is the
@@ -544,6 +561,7 @@ static int edge_at_ratio(const edge_ctx *c, double lam, double x[6][3], double *
  * the first consistent ratio (the nearer to the symmetric split; of two at the same distance
  * the one of less displacement from its subdivision values), then bisect towards 1/2 to the
  * end of the consistent interval. x, *lam and *res are replaced only when one is found. */
+#include <stdio.h>
 static void split_ratio_search(const edge_ctx *c, double x[6][3], double *lam, double *res)
 {
     enum { STEPS = 40, BISECT = 12 };
@@ -554,7 +572,8 @@ static void split_ratio_search(const edge_ctx *c, double x[6][3], double *lam, d
         for (int sgn = -1; sgn <= 1; sgn += 2) {
             double l = 0.5 + sgn * step * i, x0[6][3];
             edge_setup q;
-            if (edge_at_ratio(c, l, y, &r) < 0 || !(r <= RES_TOL) || !edge_prepare(c, l, &q, x0))
+            if (edge_at_ratio(c, l, y, &r) < 0 || !(r <= RES_TOL) || !edge_prepare(c, l, &q, x0) ||
+                !near_solution(&q, x0, y))
                 continue;
             double d = displacement(x0, y);
             if (d < bd) bd = d, bl = l, memcpy(best, y, sizeof y);
@@ -563,7 +582,7 @@ static void split_ratio_search(const edge_ctx *c, double x[6][3], double *lam, d
     double in = bl, out = 0.5 + (bl - 0.5) * (i - 2) / (i - 1); /* the inconsistent neighbour */
     for (int it = 0; it < BISECT; it++) {
         double l = (in + out) / 2;
-        if (edge_at_ratio(c, l, y, &r) >= 0 && r <= RES_TOL)
+        if (edge_at_ratio(c, l, y, &r) >= 0 && r <= RES_TOL && near_at_ratio(c, l, y))
             in = l, memcpy(best, y, sizeof y);
         else
             out = l;
@@ -583,7 +602,12 @@ static int solve_edge(const fl_mesh *m, const double *normals, six_tri *tris, si
     double x[6][3], res = 0, lam = 0.5;
     int rank = edge_at_ratio(&c, lam, x, &res);
     if (rank < 0) return -1;
-    if (rank < 5 && res > RES_TOL) split_ratio_search(&c, x, &lam, &res);
+    if (res > RES_TOL || !near_at_ratio(&c, lam, x)) split_ratio_search(&c, x, &lam, &res);
+    if (getenv("SIXDBG")) {
+        double x0[6][3]; edge_setup qq; edge_prepare(&c, lam, &qq, x0);
+        double ab[3]; g1_sub(qq.B, qq.A, ab);
+        fprintf(stderr, "edge t%zu k%d rank %d lam %.4f res %.2e disp/len %.3g spoke %.3g\n", c.t, c.k, rank, lam, res, sqrt(displacement(x0, x)) / g1_length(ab), spoke_ratio(lam, x0, x));
+    }
     six_tri *T = c.T, *U = c.U;
     int k = c.k, j = c.j;
     double rho = (1 - lam) / lam;

@@ -526,6 +526,23 @@ static int edge_prepare(const edge_ctx *c, double lam, edge_setup *q, double x0[
                                 &q->cb[0], &q->cb[1], &q->cb[2]);
 }
 
+/* A nearly (not exactly) dependent edge (elephant.off: rank 3-4 at RANK_TOL, residual
+ * 1e-12..1e-9 at every shift and ratio) is consistent as a full-rank system; its exact
+ * solution is kept when it stays near the subdivision values, the one of least displacement
+ * over the shifts of the midpoint multiplier (a 41-point grid). Returns the residual of x. */
+static double full_rank_search(const edge_setup *q, double x0[6][3], double x[6][3], double res)
+{
+    enum { GRID = 40 };
+    double y[6][3], r, best = INFINITY;
+    for (int i = 0; i <= GRID; i++) {
+        double d;
+        if (edge_solve(q, -0.5 + (double)i / GRID, 1e-24, x0, y, &r) == 5 && r <= RES_TOL &&
+            near_solution(q, x0, y) && (d = displacement(x0, y)) < best)
+            best = d, res = r, memcpy(x, y, sizeof y);
+    }
+    return res;
+}
+
 /* Step 5 at split ratio lam: the solve with the subdivision multiplier at m, then the searches
  * of the multiplier. x = the solution, *res its relative residual. Returns the rank (-1: no
  * tangent plane). */
@@ -537,6 +554,7 @@ static int edge_at_ratio(const edge_ctx *c, double lam, double x[6][3], double *
     int rank = edge_solve(&q, 0, RANK_TOL, x0, x, res);
     if (rank < 0) return -1;
     if (rank < 5 && *res > RES_TOL) *res = midpoint_multiplier_search(&q, x0, x, *res);
+    if (rank < 5 && *res > RES_TOL) *res = full_rank_search(&q, x0, x, *res);
     if (rank == 5) midpoint_spoke_search(&q, x0, x);
     return rank;
 }
@@ -561,7 +579,6 @@ static int near_at_ratio(const edge_ctx *c, double lam, double x[6][3])
  * the first consistent ratio (the nearer to the symmetric split; of two at the same distance
  * the one of less displacement from its subdivision values), then bisect towards 1/2 to the
  * end of the consistent interval. x, *lam and *res are replaced only when one is found. */
-#include <stdio.h>
 static void split_ratio_search(const edge_ctx *c, double x[6][3], double *lam, double *res)
 {
     enum { STEPS = 40, BISECT = 12 };
@@ -589,7 +606,7 @@ static void split_ratio_search(const edge_ctx *c, double x[6][3], double *lam, d
     }
     memcpy(x, best, sizeof best);
     *lam = in;
-    *res = 0;
+    *res = r <= RES_TOL ? r : 0;
 }
 
 /* Step 5 on the macro edge of half-edge h (triangle t, edge k) and its twin (u, edge j):
@@ -603,11 +620,6 @@ static int solve_edge(const fl_mesh *m, const double *normals, six_tri *tris, si
     int rank = edge_at_ratio(&c, lam, x, &res);
     if (rank < 0) return -1;
     if (res > RES_TOL || !near_at_ratio(&c, lam, x)) split_ratio_search(&c, x, &lam, &res);
-    if (getenv("SIXDBG")) {
-        double x0[6][3]; edge_setup qq; edge_prepare(&c, lam, &qq, x0);
-        double ab[3]; g1_sub(qq.B, qq.A, ab);
-        fprintf(stderr, "edge t%zu k%d rank %d lam %.4f res %.2e disp/len %.3g spoke %.3g\n", c.t, c.k, rank, lam, res, sqrt(displacement(x0, x)) / g1_length(ab), spoke_ratio(lam, x0, x));
-    }
     six_tri *T = c.T, *U = c.U;
     int k = c.k, j = c.j;
     double rho = (1 - lam) / lam;

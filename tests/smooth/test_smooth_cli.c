@@ -35,10 +35,6 @@ static void test_smooth_cli_mesh_json_and_watertight_output(void)
     CHECK_EQ_INT(m.triangle_count, 24 * 25);
     fl_mesh_report_free(&rep);
     fl_mesh_free(&m);
-    /* auto is the six-split (six patches a triangle), G1 */
-    CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_octa.off --scheme auto --json"), 0);
-    CHECK_EQ_INT(json_number(r.out, "patches"), 6 * 8);
-    CHECK(json_number(r.out, "max_edge_normal_jump_deg") < 1e-7);
     CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_octa.off --scheme pn --json"), 0);
     CHECK(json_number(r.out, "max_edge_normal_jump_deg") > 1);
     CHECK_EQ_INT(cli_run(&r, "smooth smooth_cli_octa.off -o smooth_cli_out.bez --quiet"), 0);

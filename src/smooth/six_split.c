@@ -569,7 +569,8 @@ static int near_at_ratio(const edge_ctx *c, double lam, double x[6][3])
 
 /* Where no midpoint multiplier makes a rank-deficient edge consistent at lam = 1/2 (the twice
  * subdivided icosahedron, sphere.off: the residual over the shift has a positive minimum, its
- * three coordinates vanish at different shifts), the split ratio lam of the macro edge is the
+ * three coordinates vanish at different shifts), or the solution there is far from the
+ * subdivision values (sphere.off: full-rank edges moved 6-8 edge lengths), the split ratio lam of the macro edge is the
  * second free number (docs/smooth.md, "the split ratio"): moving m in the domain changes the
  * C1 relations at m (Y_B - m = -((1 - lam) / lam)(Y_A - m), N_m = (1 - lam) P_A + lam P_B) and
  * the subdivision values, nothing outside the edge's two triangles. Measured on the twice
@@ -606,11 +607,12 @@ static void split_ratio_search(const edge_ctx *c, double x[6][3], double *lam, d
     }
     memcpy(x, best, sizeof best);
     *lam = in;
-    *res = r <= RES_TOL ? r : 0;
+    *res = 0; /* below RES_TOL */
 }
 
 /* Step 5 on the macro edge of half-edge h (triangle t, edge k) and its twin (u, edge j):
- * the symmetric split first, the split ratio only where no multiplier makes it consistent. */
+ * the symmetric split first, the split ratio only where no multiplier makes it consistent
+ * near the subdivision values. */
 static int solve_edge(const fl_mesh *m, const double *normals, six_tri *tris, six_edge *edges,
                       size_t h, size_t h2)
 {

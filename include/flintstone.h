@@ -1475,11 +1475,11 @@ typedef enum fl_g1_scheme {
                             * smooth meshes, not on every coarse one: measure it with
                             * fl_g1_surface_measure (docs/smooth.md has the numbers) */
     FL_G1_MACRO = 1,       /* steps 1-3 only: one cubic patch a triangle = PN triangles (C0) */
-    FL_G1_SIX_SPLIT = 2,   /* §9.8: six cubic micro patches a triangle (split at the edge
-                            * midpoints and the centre), C1 inside each macro triangle, G1
+    FL_G1_SIX_SPLIT = 2,   /* §9.8: six cubic micro patches a triangle (split at one point
+                            * of each edge, the midpoint unless step 5 needs another split
+                            * ratio, and the centre), C1 inside each macro triangle, G1
                             * across macro edges by the least-displacement solve of step 5
-                            * where that system has a solution: not on some mirror-symmetric
-                            * edges (singular_edges; docs/smooth.md has where and why) */
+                            * (docs/smooth.md: G1 on every mesh tested, measure it) */
     FL_G1_TWO_SPLIT = 3,   /* §9.7: pairs of thin triangles (docs/smooth.md: the three-split
                             * would make a micro angle < 15 degrees) split in two at their
                             * common edge, every other triangle three-split. Each pair is one

@@ -20,8 +20,8 @@ static const char *usage_text =
     "Bézier paths, -o .xy the curve sampled N points a segment (--samples, default 16).\n"
     "MESH (.off .obj .ply .stl, closed, manifold, oriented): cubic Bézier triangles\n"
     "interpolating the vertices and estimated normals (§9.4). Schemes: three-split (§9.6,\n"
-    "G1; auto is the same), six-split (§9.8, less oscillation, G1 on most meshes but not\n"
-    "on some symmetric ones: check max_edge_normal_jump_deg), pn (the macro patches of\n"
+    "G1; auto is the same), six-split (§9.8, G1 on every mesh tested, smaller deviation\n"
+    "on rough meshes, wigglier reflection lines on smooth ones), pn (the macro patches of\n"
     "steps 1-3 = PN triangles, only C0), two-split (§9.7: pairs of thin triangles split\n"
     "in two at their common edge as one C1 cross split, the rest three-split; G1).\n"
     "\n"
@@ -233,7 +233,8 @@ static int run_surface(const cli_common *c, const smooth_args *a)
     fl_g1_metrics metrics;
     fl_status st = fl_read_mesh(a->input, &m, &err);
     if (st) return cli_report(&err);
-    /* auto = three-split: the six-split is not G1 on every mesh (docs/smooth.md) */
+    /* auto = three-split: the six-split is G1 on every mesh tested, but its reflection lines
+     * wiggle where the three-split's are smooth (sphere.off, icospheres; docs/smooth.md) */
     int scheme = FL_G1_THREE_SPLIT;
     if (a->scheme && !strcmp(a->scheme, "pn")) scheme = FL_G1_MACRO;
     if (a->scheme && !strcmp(a->scheme, "six-split")) scheme = FL_G1_SIX_SPLIT;

@@ -1,11 +1,11 @@
 /* Properties of the six-split surfaces (thesis §9.8) on closed meshes: octahedron,
  * icosahedron, a cube split into triangles (mirror-symmetric edges), a perturbed convex hull of
- * random points, the demo torus and the once subdivided icosahedron. The G1 oracle (g1_oracle.h) pairs patch edges by sorting
+ * random points, the demo torus and the once and twice subdivided icosahedron. The G1 oracle (g1_oracle.h) pairs patch edges by sorting
  * and compares the two patches' normals at many points, independently of the library. */
 #include "cli/cli_run.h"
 #include "g1_oracle.h"
 
-enum { MESHES = 6 };
+enum { MESHES = 7 };
 
 /* The convex hull (fl_dt3 hull faces, exact) of 60 random points at radius 1 +- 5%: a closed
  * convex mesh without symmetry, its vertices compacted. */
@@ -69,6 +69,10 @@ static fl_mesh test_mesh(int i)
         /* once subdivided: mirror planes along the degree-5/6 edges (rank-deficient step 5)
          * and across the degree-6/6 edges (spokes collapse without the midpoint search) */
         return g1_icosphere(1, 0, 1);
+    case 6:
+        /* twice subdivided: rank-deficient edges where no midpoint multiplier is consistent
+         * at the symmetric split; G1 only with the split ratio lam (docs/smooth.md) */
+        return g1_icosphere(2, 0, 1);
     default:
         CHECK_STATUS(fl_read_mesh(FL_SOURCE_DIR "/data/demo/torus.off", &m, &err), FL_OK, &err);
         return m;
@@ -168,7 +172,7 @@ static void test_six_split_tessellation_is_watertight(void)
         fl_g1_surface s = six_split(&m);
         fl_error err;
         double *n = NULL;
-        unsigned density = i == 4 ? 2 : 4;
+        unsigned density = i == 4 || i == 6 ? 2 : 4;
         CHECK_STATUS(fl_g1_surface_tessellate(&s, density, &tm, &n, &err), FL_OK, &err);
         fl_mesh_report r, r0;
         fl_mesh_check_options skip = {.skip_self_intersections = 1};
@@ -188,6 +192,57 @@ static void test_six_split_tessellation_is_watertight(void)
         fl_mesh_report_free(&r0);
         free(n);
         fl_mesh_free(&tm);
+        fl_g1_surface_free(&s);
+        fl_mesh_free(&m);
+    }
+}
+
+/* Control point b_ijk of micro patch p (i on corner 0, j on corner 1). */
+static const double *cp(const fl_g1_surface *s, size_t p, int i, int j)
+{
+    return s->ctrl + 30 * p + 3 * ((3 - i) * (4 - i) / 2 + (3 - i - j));
+}
+
+/* The micro layout follows the split ratio: at the split point m of every macro edge the two
+ * boundary neighbours Y_A, Y_B are opposite (Y_B - m = -rho (Y_A - m), rho > 0), and with
+ * lam = 1 / (1 + rho) the points on the spoke m -> O are the C1 combinations of their two
+ * neighbours, N_m = (1 - lam) P_A + lam P_B and Q_m = (1 - lam) Q_A + lam Q_B, in BOTH macro
+ * triangles (each sees the ratio from its own side). On the twice subdivided icosahedron some
+ * edges must be split off the midpoint (no consistent solution at lam = 1/2). */
+static void test_six_split_layout_follows_the_split_ratio(void)
+{
+    for (int i = 0; i < MESHES; i++) {
+        fl_mesh m = test_mesh(i);
+        fl_g1_surface s = six_split(&m);
+        double worst = 0, lmin = 1, lmax = 0;
+        size_t off = 0;
+        for (size_t p = 0; p < s.patch_count; p += 2) {
+            const double *mm = cp(&s, p, 0, 3), *ya = cp(&s, p, 1, 2), *yb = cp(&s, p + 1, 2, 1);
+            double a[3], b[3], aa = 0, ab = 0, cr = 0;
+            for (int d = 0; d < 3; d++) {
+                a[d] = ya[d] - mm[d];
+                b[d] = yb[d] - mm[d];
+                aa += a[d] * a[d];
+                ab += a[d] * b[d];
+            }
+            double rho = -ab / aa, lam = 1 / (1 + rho);
+            for (int d = 0; d < 3; d++)
+                cr = fmax(cr, fabs(b[d] + rho * a[d]) / sqrt(aa));
+            const double *nm = cp(&s, p, 0, 2), *pa = cp(&s, p, 1, 1), *pb = cp(&s, p + 1, 1, 1);
+            const double *qm = cp(&s, p, 0, 1), *qa = cp(&s, p, 1, 0), *qb = cp(&s, p + 1, 0, 1);
+            double scale = sqrt(aa);
+            for (int d = 0; d < 3; d++) {
+                cr = fmax(cr, fabs(nm[d] - (1 - lam) * pa[d] - lam * pb[d]) / scale);
+                cr = fmax(cr, fabs(qm[d] - (1 - lam) * qa[d] - lam * qb[d]) / scale);
+            }
+            worst = fmax(worst, cr);
+            lmin = fmin(lmin, lam);
+            lmax = fmax(lmax, lam);
+            off += fabs(lam - 0.5) > 1e-3;
+        }
+        CHECK_MSG(worst < 1e-9 && lmin > 0 && lmax < 1, "mesh %d: %g, lam in [%g, %g]", i, worst,
+                  lmin, lmax);
+        if (i == 6) CHECK_MSG(off > 0, "mesh %d: every split at the midpoint", i);
         fl_g1_surface_free(&s);
         fl_mesh_free(&m);
     }
@@ -216,4 +271,5 @@ static void test_six_split_cli_reports_g1_on_the_torus(void)
 FL_TEST_MAIN(FL_TEST_CASE(test_six_split_interpolates_vertices_and_normals_to_1e12),
              FL_TEST_CASE(test_six_split_is_g1_on_every_micro_and_macro_edge),
              FL_TEST_CASE(test_six_split_tessellation_is_watertight),
+             FL_TEST_CASE(test_six_split_layout_follows_the_split_ratio),
              FL_TEST_CASE(test_six_split_cli_reports_g1_on_the_torus))

@@ -1,6 +1,7 @@
 /* Fuzzes fl_sweep_build / fl_sweep_polyline_build + fl_sweep_closest on small decoded shapes
  * (meshes of up to 12 vertices and 16 triangles of any topology, 2D/3D polylines of up to 16
- * points) and up to 8 queries. Oracle: the exact answer's distance equals the brute-force
+ * points) and up to 8 queries; meshes also through the edge-collapse hierarchy
+ * (fl_sweep_collapse_*: same input rules, same answers). Oracle: the exact answer's distance equals the brute-force
  * minimum over all elements (tests/sweep/sweep_oracle.h, long double, independent code) to a
  * relative 1e-9; inputs beyond the documented |x| <= 1e150 or NaN/Inf must be FL_ERR_INPUT
  * (build) or FL_ERR_USAGE (query). */
@@ -15,6 +16,35 @@ static int out_of_range(const double *c, size_t count, double *maxabs)
         else *maxabs = fmax(*maxabs, fabs(c[i]));
     }
     return bad;
+}
+
+/* Every answer against the brute-force minimum over all elements. */
+static void check_answers(const fl_closest *res, const double *q, size_t nq, int dim, double tol,
+                          double qmax, int kind, const double *pts3, const uint32_t *tri,
+                          size_t nv, size_t elements)
+{
+    for (size_t k = 0; k < nq; k++) {
+        double p[3] = {q[dim * k], q[dim * k + 1], dim == 3 ? q[dim * k + 2] : 0};
+        ld best = INFINITY;
+        for (size_t e = 0; e < elements; e++) {
+            ld d = kind == 0 ? oracle_mesh_element(pts3, tri, e, p)
+                             : oracle_polyline_element(pts3, nv, e, p);
+            if (d < best) best = d;
+        }
+        /* Squared distances underflow below ~1e-154 (found by this target: distance 0 for a
+         * true 2e-300), so that is the absolute resolution. */
+        double slack = 1e-9 * (qmax + (double)best) + 1e-150;
+        if (res[k].exact) {
+            FZ_ASSERT(fabsl((ld)res[k].distance - best) <= slack,
+                      "query %zu: distance %.17g, brute force %.17Lg", k, res[k].distance, best);
+        } else {
+            FZ_ASSERT(tol > 0 && res[k].upper - res[k].lower <= tol * (1 + 1e-12),
+                      "inexact answer wider than the tolerance");
+            FZ_ASSERT(res[k].lower <= best + slack && best <= res[k].upper + slack,
+                      "query %zu: [%.17g, %.17g] misses %.17Lg", k, res[k].lower, res[k].upper,
+                      best);
+        }
+    }
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -76,29 +106,24 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_ASSERT(st == FL_ERR_USAGE, "bad query gave %d", (int)st);
     } else {
         FZ_ASSERT(st == FL_OK, "closest failed: %s", err.message);
-        for (size_t k = 0; k < nq; k++) {
-            double p[3] = {q[dim * k], q[dim * k + 1], dim == 3 ? q[dim * k + 2] : 0};
-            ld best = INFINITY;
-            for (size_t e = 0; e < elements; e++) {
-                ld d = kind == 0 ? oracle_mesh_element(pts3, tri, e, p)
-                                 : oracle_polyline_element(pts3, nv, e, p);
-                if (d < best) best = d;
-            }
-            /* Squared distances underflow below ~1e-154 (found by this target: distance 0
-             * for a true 2e-300), so that is the absolute resolution. */
-            double slack = 1e-9 * (qmax + (double)best) + 1e-150;
-            if (res[k].exact) {
-                FZ_ASSERT(fabsl((ld)res[k].distance - best) <= slack,
-                          "query %zu: distance %.17g, brute force %.17Lg", k, res[k].distance,
-                          best);
-            } else {
-                FZ_ASSERT(tol > 0 && res[k].upper - res[k].lower <= tol * (1 + 1e-12),
-                          "inexact answer wider than the tolerance");
-                FZ_ASSERT(res[k].lower <= best + slack && best <= res[k].upper + slack,
-                          "query %zu: [%.17g, %.17g] misses %.17Lg", k, res[k].lower,
-                          res[k].upper, best);
-            }
+        check_answers(res, q, nq, dim, tol, qmax, kind, pts3, tri, nv, elements);
+    }
+    if (kind == 0) { /* the edge-collapse hierarchy: accepts what fl_sweep_build accepts */
+        fl_mesh m = {nv, pts, nt, tri};
+        fl_sweep_collapse *col = NULL;
+        st = fl_sweep_collapse_build(&m, NULL, &col, &err);
+        fz_check_status(st, &err, "fl_sweep_collapse_build");
+        FZ_ASSERT(st == FL_OK, "collapse build failed where the spatial one did not: %s",
+                  err.message);
+        st = fl_sweep_collapse_closest(col, q, nq, tol, res, &err);
+        fz_check_status(st, &err, "fl_sweep_collapse_closest");
+        if (qbad) {
+            FZ_ASSERT(st == FL_ERR_USAGE, "collapse: bad query gave %d", (int)st);
+        } else {
+            FZ_ASSERT(st == FL_OK, "collapse closest failed: %s", err.message);
+            check_answers(res, q, nq, dim, tol, qmax, kind, pts3, tri, nv, elements);
         }
+        fl_sweep_collapse_free(col);
     }
     fl_sweep_free(sw);
     return 0;

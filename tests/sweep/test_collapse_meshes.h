@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "fl_test.h"
-#include "sweep_oracle.h"
+#include "mesh_answer_check.h"
 
 static unsigned long long cm_rng = 0xc011a95eULL;
 
@@ -110,46 +110,6 @@ static inline fl_mesh cm_soup(size_t n, double size)
         }
     }
     return m;
-}
-
-static inline double cm_scale(const fl_mesh *m)
-{
-    double s = 0;
-    for (size_t i = 0; i < 3 * m->vertex_count; i++)
-        s = fmax(s, fabs(m->xyz[i]));
-    return s;
-}
-
-static inline ld cm_brute(const fl_mesh *m, const double *q)
-{
-    ld best = INFINITY;
-    for (size_t t = 0; t < m->triangle_count; t++) {
-        ld d = oracle_mesh_element(m->xyz, m->tri, t, q);
-        if (d < best) best = d;
-    }
-    return best;
-}
-
-/* An exact answer: the distance equals brute force to 1e-12 relative, the element is at that
- * distance (the same triangle or an equidistant one) and the point lies on it. */
-static inline void cm_check_exact(const fl_mesh *m, const double *q, const fl_closest *r)
-{
-    double tol = 1e-12 * (cm_scale(m) + fabs(q[0]) + fabs(q[1]) + fabs(q[2]));
-    ld bf = cm_brute(m, q);
-    CHECK(r->exact);
-    CHECK_NEAR(r->distance, (double)bf, tol);
-    CHECK(r->element < m->triangle_count);
-    if (r->element >= m->triangle_count) return;
-    CHECK_NEAR((double)oracle_mesh_element(m->xyz, m->tri, r->element, q), (double)bf, tol);
-    double dp = 0;
-    for (int c = 0; c < 3; c++) {
-        double x = 0;
-        for (int k = 0; k < 3; k++)
-            x += r->bary[k] * oracle_vertex(m->xyz, m->tri, r->element, k)[c];
-        CHECK_NEAR(x, r->point[c], tol);
-        dp += (q[c] - r->point[c]) * (q[c] - r->point[c]);
-    }
-    CHECK_NEAR(sqrt(dp), r->distance, tol);
 }
 
 #endif /* TEST_COLLAPSE_MESHES_H */

@@ -15,7 +15,7 @@ static fl_sweep_collapse *build(const fl_mesh *m)
 /* Random queries: a third near the surface, a third in the box, a third far away. */
 static void random_queries(const fl_mesh *m, double *q, size_t n)
 {
-    double s = cm_scale(m);
+    double s = mesh_scale(m);
     for (size_t i = 0; i < n; i++) {
         double *p = q + 3 * i;
         if (i % 3 == 0) {
@@ -44,7 +44,7 @@ static void check_random(const fl_mesh *m, size_t n)
     fl_error err = {0};
     CHECK_STATUS(fl_sweep_collapse_closest(h, q, n, 0.0, r, &err), FL_OK, &err);
     for (size_t i = 0; i < n; i++)
-        cm_check_exact(m, q + 3 * i, r + i);
+        check_exact(m, q + 3 * i, r + i);
     fl_sweep_collapse_info info;
     CHECK_STATUS(fl_sweep_collapse_info_get(h, &info, &err), FL_OK, &err);
     CHECK(info.fine_triangles == m->triangle_count);
@@ -109,13 +109,13 @@ static void test_coherent_walk(void)
         }
         fl_closest r, f;
         CHECK_STATUS(fl_sweep_collapse_cursor_closest(c, p, 0.0, &r, &err), FL_OK, &err);
-        cm_check_exact(&m, p, &r);
+        check_exact(&m, p, &r);
         walk_cost += r.visited;
         CHECK_STATUS(fl_sweep_collapse_closest(h, p, 1, 0.0, &f, &err), FL_OK, &err);
         fresh_cost += f.visited;
         if (i % 50 == 49) { /* a tolerance query in between must bracket the distance */
             CHECK_STATUS(fl_sweep_collapse_cursor_closest(c, p, 1e-2, &r, &err), FL_OK, &err);
-            double bf = (double)cm_brute(&m, p);
+            double bf = (double)brute_distance(&m, p);
             CHECK(r.lower <= bf + 1e-12 && bf <= r.upper + 1e-12);
             CHECK(r.upper - r.lower <= 1e-2);
         }
@@ -144,7 +144,7 @@ static void test_tolerance(void)
         double tol = k ? 0.05 : 0.3;
         CHECK_STATUS(fl_sweep_collapse_closest(h, q, n, tol, r, &err), FL_OK, &err);
         for (size_t i = 0; i < n; i++) {
-            double bf = (double)cm_brute(&m, q + 3 * i), slack = 1e-12 * (1 + bf);
+            double bf = (double)brute_distance(&m, q + 3 * i), slack = 1e-12 * (1 + bf);
             CHECK(r[i].lower <= bf + slack && bf <= r[i].upper + slack);
             CHECK(r[i].upper - r[i].lower <= tol);
             early += !r[i].exact;
@@ -179,7 +179,7 @@ static void test_extreme_scales(void)
         fl_closest r[60];
         CHECK_STATUS(fl_sweep_collapse_closest(h, q, 60, 0.0, r, &err), FL_OK, &err);
         for (int i = 0; i < 60; i++)
-            cm_check_exact(&m, q + 3 * i, r + i);
+            check_exact(&m, q + 3 * i, r + i);
         fl_sweep_collapse_free(h);
         cm_free(&m);
     }

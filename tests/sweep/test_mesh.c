@@ -3,7 +3,7 @@
 
 #include "fl_test.h"
 #include "sweep/sweep_internal.h"
-#include "sweep_oracle.h"
+#include "mesh_answer_check.h"
 
 static unsigned long long rng = 0x5eedULL;
 
@@ -88,44 +88,11 @@ static fl_mesh make_messy(void)
     return m;
 }
 
-static double mesh_scale(const fl_mesh *m)
+/* Checks one exact answer (mesh_answer_check.h) and that its barycentrics are a convex
+ * combination. */
+static void check_exact_bary(const fl_mesh *m, const double *q, const fl_closest *r)
 {
-    double s = 0;
-    for (size_t i = 0; i < 3 * m->vertex_count; i++)
-        s = fmax(s, fabs(m->xyz[i]));
-    return s;
-}
-
-static ld brute_distance(const fl_mesh *m, const double *q)
-{
-    ld best = INFINITY;
-    for (size_t t = 0; t < m->triangle_count; t++) {
-        ld d = oracle_mesh_element(m->xyz, m->tri, t, q);
-        if (d < best) best = d;
-    }
-    return best;
-}
-
-/* Checks one exact answer: the distance matches brute force, the element is at that distance,
- * and point / bary / distance agree with each other. */
-static void check_exact(const fl_mesh *m, const double *q, const fl_closest *r)
-{
-    double tol = 1e-12 * (mesh_scale(m) + fabs(q[0]) + fabs(q[1]) + fabs(q[2]));
-    ld bf = brute_distance(m, q);
-    CHECK(r->exact);
-    CHECK_NEAR(r->distance, (double)bf, tol);
-    CHECK(r->element < m->triangle_count);
-    if (r->element >= m->triangle_count) return;
-    CHECK_NEAR((double)oracle_mesh_element(m->xyz, m->tri, r->element, q), (double)bf, tol);
-    double dp = 0;
-    for (int c = 0; c < 3; c++) {
-        double x = 0;
-        for (int k = 0; k < 3; k++)
-            x += r->bary[k] * oracle_vertex(m->xyz, m->tri, r->element, k)[c];
-        CHECK_NEAR(x, r->point[c], tol);
-        dp += (q[c] - r->point[c]) * (q[c] - r->point[c]);
-    }
-    CHECK_NEAR(sqrt(dp), r->distance, tol);
+    check_exact(m, q, r);
     CHECK(r->bary[0] >= 0 && r->bary[1] >= 0 && r->bary[2] >= 0);
     CHECK_NEAR(r->bary[0] + r->bary[1] + r->bary[2], 1, 1e-12);
 }
@@ -164,7 +131,7 @@ static void check_mesh_queries(const fl_mesh *m, size_t nq)
     fl_closest *r = calloc(nq, sizeof *r);
     CHECK_STATUS(fl_sweep_closest(s, q, nq, 0, r, &err), FL_OK, &err);
     for (size_t i = 0; i < nq; i++)
-        check_exact(m, q + 3 * i, r + i);
+        check_exact_bary(m, q + 3 * i, r + i);
     free(q);
     free(r);
     fl_sweep_free(s);
@@ -199,7 +166,7 @@ static void test_sweep_open_nonmanifold_degenerate_matches_brute_force(void)
     for (int i = 0; i < 4 && s; i++) {
         fl_closest r;
         CHECK_STATUS(fl_sweep_closest(s, q[i], 1, 0, &r, &err), FL_OK, &err);
-        check_exact(&m, q[i], &r);
+        check_exact_bary(&m, q[i], &r);
     }
     fl_sweep_free(s);
     fl_mesh_free(&m);
@@ -256,7 +223,7 @@ static void test_sweep_random_walk_uses_coherence_ball(void)
             q[c] += urand(-0.002, 0.002);
         fl_closest r;
         CHECK_STATUS(fl_sweep_cursor_closest(cur, q, 0, &r, &err), FL_OK, &err);
-        check_exact(&m, q, &r);
+        check_exact_bary(&m, q, &r);
         reused += r.reused;
     }
     CHECK_MSG(reused > 0, "none of 400 steps reused the ball (%d)", reused);
@@ -295,7 +262,7 @@ static void test_sweep_dynamic_walk_stays_exact_and_is_cheaper(void)
         double tol = step % 3 == 2 ? 0.01 : 0;
         CHECK_STATUS(fl_sweep_cursor_closest(cur, q, tol, &r, &err), FL_OK, &err);
         if (r.exact) {
-            check_exact(&m, q, &r);
+            check_exact_bary(&m, q, &r);
         } else {
             double bf = (double)brute_distance(&m, q);
             CHECK(r.lower <= bf + 1e-12 && bf <= r.upper + 1e-12 && r.upper - r.lower <= tol);

@@ -11,7 +11,7 @@ probe="$root/build/rss_probe"
 cc -O2 -std=c11 -I"$root/include" "$root/scripts/rss_probe.c" "$lib" -lm -o "$probe"
 sizes=${*:-100000 1000000}
 for n in $sizes; do
-    for kind in ${RSS_KINDS:-dt2 dt3 rec3 rec3s sweep}; do
+    for kind in ${RSS_KINDS:-dt2 dt3 rec2 rec3 rec3s sweep}; do
         "$probe" "$kind" "$n" || echo "$kind n=$n failed"
     done
 done

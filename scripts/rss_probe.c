@@ -1,6 +1,7 @@
 /* Peak memory of one capability on n generated points, for docs/reliability.md:
- *   rss_probe dt2|dt3|rec3|rec3s|sweep N
- * Generates the input in memory (uniform square / cube; a torus surface for rec3, which
+ *   rss_probe dt2|dt3|rec2|rec3|rec3s|sweep N
+ * Generates the input in memory (uniform square / cube; for rec2 the closed curve
+ * r(t) = 1 + 0.3 sin 5t of bench/tools/recon2_curve.c at random t; a torus surface for rec3, which
  * constriction must close into a sphere and which therefore locks and flips a lot; for rec3s the
  * genus-0 perturbed sphere of bench/recon3_scale.c, the issue's "closed surface" case; a height-field
  * grid mesh of about 2N triangles for sweep), records the peak RSS (getrusage ru_maxrss), runs
@@ -39,7 +40,7 @@ static double now(void)
 
 int main(int argc, char **argv)
 {
-    if (argc != 3) return fprintf(stderr, "usage: rss_probe dt2|dt3|rec3|rec3s|sweep N\n"), 1;
+    if (argc != 3) return fprintf(stderr, "usage: rss_probe dt2|dt3|rec2|rec3|rec3s|sweep N\n"), 1;
     const char *kind = argv[1];
     size_t n = (size_t)strtod(argv[2], NULL), units = n;
     unsigned long long seed = 42;
@@ -51,6 +52,12 @@ int main(int argc, char **argv)
             double u = 6.283185307179586 * rnd(&seed), v = 6.283185307179586 * rnd(&seed);
             c[3 * i] = (2 + cos(v)) * cos(u), c[3 * i + 1] = (2 + cos(v)) * sin(u);
             c[3 * i + 2] = sin(v);
+        }
+    } else if (strcmp(kind, "rec2") == 0) { /* stored as x, y, 0 and packed below */
+        for (size_t i = 0; i < n; i++) {
+            double t = 6.283185307179586 * rnd(&seed);
+            double r = 1 + 0.3 * sin(5 * t) + 1e-9 * (rnd(&seed) - 0.5);
+            c[3 * i] = r * cos(t), c[3 * i + 1] = r * sin(t), c[3 * i + 2] = 0;
         }
     } else if (strcmp(kind, "rec3s") == 0) {
         for (size_t i = 0; i < n; i++) { /* r(d) = 1 + 0.2 dx dy + 0.15 sin(3 dz), d uniform */
@@ -94,6 +101,11 @@ int main(int argc, char **argv)
         fl_dt2 dt;
         st = fl_dt2_build(c, n, NULL, &dt, &err);
         if (!st) units = n, fl_dt2_free(&dt);
+    } else if (strcmp(kind, "rec2") == 0) {
+        for (size_t i = 0; i < n; i++) c[2 * i] = c[3 * i], c[2 * i + 1] = c[3 * i + 1];
+        fl_reconstruction2 rec;
+        st = fl_reconstruct2(c, n, NULL, &rec, &err);
+        if (!st) fl_reconstruction2_free(&rec);
     } else if (strcmp(kind, "dt3") == 0) {
         fl_dt3 dt;
         st = fl_dt3_build(c, n, NULL, &dt, &err);

@@ -99,6 +99,19 @@ static fl_status check_input(const double *coords, size_t n, int dim, const uint
     return FL_OK;
 }
 
+/* Checks the input and, when there are simplices, builds the grid and an empty ring buffer
+ * (the caller frees both); FL_OK with nothing built when count == 0. */
+static fl_status batch_begin(const double *coords, size_t n, int dim, const uint32_t *simplices,
+                             size_t count, graph_grid *g, fl_vec *ring, fl_error *err)
+{
+    fl_status st = check_input(coords, n, dim, simplices, count, err);
+    if (st != FL_OK || count == 0) return st;
+    st = graph_grid_build(g, coords, n, dim, err);
+    if (st != FL_OK) return st;
+    fl_vec_init(ring, sizeof(uint32_t));
+    return FL_OK;
+}
+
 fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
                                     const uint32_t *simplices, size_t count, double *c0,
                                     double *c1, int *found, fl_error *err)
@@ -106,13 +119,10 @@ fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
     if (count && (!simplices || !c0 || !c1))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "fl_gamma_simplices_params: simplices, c0 and c1 must not be NULL");
-    fl_status st = check_input(coords, n, dim, simplices, count, err);
-    if (st != FL_OK || count == 0) return st;
     graph_grid g;
-    st = graph_grid_build(&g, coords, n, dim, err);
-    if (st != FL_OK) return st;
     fl_vec ring;
-    fl_vec_init(&ring, sizeof(uint32_t));
+    fl_status st = batch_begin(coords, n, dim, simplices, count, &g, &ring, err);
+    if (st != FL_OK || count == 0) return st;
     for (size_t i = 0; i < count && st == FL_OK; i++) {
         int r = simplex_params(&g, simplices + (size_t)dim * i, &ring, c0 + i, c1 + i);
         if (r < 0)
@@ -124,6 +134,23 @@ fl_status fl_gamma_simplices_params(const double *coords, size_t n, int dim,
     fl_vec_free(&ring);
     graph_grid_free(&g);
     return st;
+}
+
+/* The magnitude of the coordinates around a simplex (its centre, the grid's extent): the scale
+ * of the rounding in the lens and ball tests below. */
+static double coord_magnitude(const graph_grid *g, const gamma_frame *f)
+{
+    double mag = 0;
+    for (int k = 0; k < g->dim; k++)
+        mag = fmax(mag, fabs(f->center[k]) + fabs(g->lo[k]) + (double)g->res[k] * g->cell);
+    return mag;
+}
+
+static int is_vertex(const uint32_t *simplex, int dim, uint32_t q)
+{
+    int own = 0;
+    for (int k = 0; k < dim; k++) own |= simplex[k] == q;
+    return own;
 }
 
 /* 1 when no point but the simplex's vertices lies in a lens slightly THICKER than N_γ(-kappa,
@@ -142,9 +169,7 @@ static int lens_empty(const graph_grid *g, const gamma_frame *f, const uint32_t 
     int dim = g->dim;
     double lo[3], hi[3], reach = f->r * (1 + 1e-6);
     for (int k = 0; k < dim; k++) lo[k] = f->center[k] - reach, hi[k] = f->center[k] + reach;
-    double mag = 0; /* the cells' corners and h round at the scale of the coordinates */
-    for (int k = 0; k < dim; k++)
-        mag = fmax(mag, fabs(f->center[k]) + fabs(g->lo[k]) + (double)g->res[k] * g->cell);
+    double mag = coord_magnitude(g, f); /* the rounding scale */
     double herr = 1e-12 * (reach + mag);
     /* d2 >= 0, so a point in the lens has |h| < r^2 / (2T): only cells meeting that slab (with
      * the margin for the rounding of h) can hold one */
@@ -156,9 +181,7 @@ static int lens_empty(const graph_grid *g, const gamma_frame *f, const uint32_t 
     double r2 = f->r * f->r * (1 + 1e-9);
     for (size_t i = 0; i < box->count; i++) {
         uint32_t q = items[i];
-        int own = 0;
-        for (int k = 0; k < dim; k++) own |= simplex[k] == q;
-        if (own) continue;
+        if (is_vertex(simplex, dim, q)) continue;
         const double *p = g->coords + (size_t)dim * q;
         double d2 = 0, h = 0;
         for (int k = 0; k < dim; k++) {
@@ -186,9 +209,7 @@ static int side_ball_empty(const graph_grid *g, const gamma_frame *f, const uint
     if (!(m >= 0 && m < 1) || !(f->r > 0)) return 0;
     int dim = g->dim;
     double big = f->r / (1 - m), t = sqrt(fmax(big * big - f->r * f->r, 0));
-    double mag = 0;
-    for (int k = 0; k < dim; k++)
-        mag = fmax(mag, fabs(f->center[k]) + fabs(g->lo[k]) + (double)g->res[k] * g->cell);
+    double mag = coord_magnitude(g, f); /* the rounding scale */
     double reach = big * (1 + 1e-6) + 1e-12 * (mag + big + t);
     if (!isfinite(reach)) return 0;
     for (int side = -1; side <= 1; side += 2) {
@@ -203,9 +224,7 @@ static int side_ball_empty(const graph_grid *g, const gamma_frame *f, const uint
         int empty = 1;
         for (size_t i = 0; i < box->count && empty; i++) {
             uint32_t q = items[i];
-            int own = 0;
-            for (int k = 0; k < dim; k++) own |= simplex[k] == q;
-            if (own) continue;
+            if (is_vertex(simplex, dim, q)) continue;
             const double *p = g->coords + (size_t)dim * q;
             double d2 = 0;
             for (int k = 0; k < dim; k++) d2 += (p[k] - c[k]) * (p[k] - c[k]);
@@ -226,13 +245,10 @@ fl_status fl_gamma_simplices_min_c1(const double *coords, size_t n, int dim,
     *min_c1 = NAN;
     if (argmin) *argmin = count;
     double c0 = NAN, c1 = NAN;
-    fl_status st = check_input(coords, n, dim, simplices, count, err);
-    if (st != FL_OK || count == 0) return st;
     graph_grid g;
-    st = graph_grid_build(&g, coords, n, dim, err);
-    if (st != FL_OK) return st;
     fl_vec ring;
-    fl_vec_init(&ring, sizeof(uint32_t));
+    fl_status st = batch_begin(coords, n, dim, simplices, count, &g, &ring, err);
+    if (st != FL_OK || count == 0) return st;
     double m = NAN;
     size_t at = count;
     for (size_t i = 0; i < count && st == FL_OK && !(m <= -1); i++) {

@@ -711,18 +711,26 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
      * (registering a long simplex visits every cell of its box). Long simplices (across a
      * hollow ball set, e.g. a ring) meet many cells: the cells grow until the registrations fit
      * in max(2e7, 64 per simplex), trading memory for longer lists. */
-    double vol = 1;
+    double vol = 1, ext = 0;
     for (int c = 0; c < 3; c++) {
         sk->origin[c] = lo[c];
         vol *= hi[c] - lo[c];
+        ext = fmax(ext, hi[c] - lo[c]);
     }
+    /* Balls whose reach is below the ulp of their coordinates (weight 1e-40 at 1e10) have
+     * boxes of side 0; when they are the majority the median is 0, and a cell of size 1 with a
+     * single cell left the others' centres outside the index (G = inf at a centre; fuzz_skin).
+     * Start from a fraction of the index box instead; only when that is 0 too (every box is
+     * the same point) does one cell of any size hold everything. */
+    double first = fmax(median, cbrt(vol / 262144.0));
+    if (!(first > 0)) first = ext / 64;
     double budget = fmax(2e7, 64.0 * (double)sk->simplex_count);
     size_t cells = 1;
-    if (!(median > 0)) { /* no ball of any simplex is positive: every list stays empty */
+    if (!(first > 0)) { /* no listed simplex, or all their boxes are one point */
         sk->cell = 1;
         sk->dims[0] = sk->dims[1] = sk->dims[2] = 1;
     }
-    for (double cell = fmax(1.0 * median, cbrt(vol / 262144.0)); median > 0; cell *= 1.5) {
+    for (double cell = first; first > 0; cell *= 1.5) {
         sk->cell = cell;
         /* A flat box (balls in a plane, one of them tiny: reach 7e-76) gave cells of 1e-26 and
          * 1e27 of them along an axis, beyond size_t (UBSan; found by fuzz/fuzz_skin.c): grow

@@ -344,6 +344,27 @@ static void test_skin_subnormal_weight_keeps_its_ball(void)
     fl_skin_function_free(g);
 }
 
+/* Round 7 (CI's fuzz_skin): two balls of weight 1e-40 at coordinates 1e10. Their reach is below
+ * the ulp of their coordinates, so their index boxes are points; with most boxes points the
+ * median side was 0, the index fell back to one cell of size 1, and the second centre lay
+ * outside it: G = inf ("outside") at a ball's centre. Every centre must read G < 0. */
+static void test_skin_point_boxes_keep_every_ball(void)
+{
+    double balls[] = {1e10, 1e10, 1e10, 1e-40, 2e10, 1e10, 1e10, 1e-40,
+                      1e10, 3e10, -1e10, 1e-40};
+    for (size_t n = 2; n <= 3; n++) {
+        fl_skin_function *g = NULL;
+        fl_error err;
+        CHECK_STATUS(fl_skin_function_new(balls, n, 0.5, &g, &err), FL_OK, &err);
+        if (!g) return;
+        for (size_t i = 0; i < n; i++) {
+            double v = fl_skin_function_value(g, balls + 4 * i);
+            CHECK_MSG(v < 0, "%zu balls: G(centre %zu) = %g", n, i, v);
+        }
+        fl_skin_function_free(g);
+    }
+}
+
 int main(void)
 {
     fl_test_case cases[] = {
@@ -359,6 +380,7 @@ int main(void)
         FL_TEST_CASE(test_svg_halfplane_huge_disc),
         FL_TEST_CASE(test_skin_spacing_below_resolution),
         FL_TEST_CASE(test_skin_subnormal_weight_keeps_its_ball),
+        FL_TEST_CASE(test_skin_point_boxes_keep_every_ball),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

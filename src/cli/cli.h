@@ -43,6 +43,12 @@ int cli_parse_memory_size(const char *s, unsigned long long *out);
  * it (nothing when no limit was set). */
 void cli_memory_limit_note(void);
 
+/* Before any work: 0 when `path` is NULL or its extension is one of `formats` (space
+ * separated, lower case, e.g. "off obj ply stl"); otherwise prints which formats this command
+ * writes and returns the usage exit code, so a wrong -o fails at once rather than after the
+ * computation. */
+int cli_check_output(const char *path, const char *formats);
+
 /* Exit code for a status (FL_ERR_NOMEM exits 3). */
 int cli_exit_code(fl_status status);
 

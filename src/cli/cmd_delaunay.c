@@ -228,6 +228,7 @@ int cmd_delaunay(int argc, char **argv)
     s.weighted = weighted;
     if (weighted) {
         fl_balls b;
+        if ((code = cli_check_output(c.output, "vtk node ele"))) return code;
         if (fl_read_balls(input, &b, &err)) return cli_report(&err);
         s.dim = 3;
         s.points = b.count;
@@ -236,6 +237,11 @@ int cmd_delaunay(int argc, char **argv)
     } else {
         fl_points p;
         if (fl_read_points(input, &p, &err)) return cli_report(&err);
+        if ((code = cli_check_output(c.output, p.dim == 2 ? "svg off obj ply stl"
+                                                          : "vtk node ele"))) {
+            fl_points_free(&p);
+            return code;
+        }
         s.dim = p.dim;
         s.points = p.count;
         code = p.dim == 2 ? run_2d(&c, &p, verify, &prog, &s) : run_3d(&c, &p, verify, &prog, &s);

@@ -87,6 +87,11 @@ int cmd_graph(int argc, char **argv)
     fl_points p;
     double t0 = cli_now();
     if (fl_read_points(a.input, &p, &err)) return cli_report(&err);
+    int code = cli_check_output(c.output, p.dim == 2 ? "svg obj ply" : "obj ply");
+    if (code) {
+        fl_points_free(&p);
+        return code;
+    }
     cli_progress prog;
     cli_progress_init(&prog, &c);
     fl_graph g = {0};

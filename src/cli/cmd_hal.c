@@ -178,10 +178,13 @@ int cmd_hal(int argc, char **argv)
     if (error_s && (cli_parse_double(error_s, &max_error) || max_error < 0))
         return cli_fail(1, "hal: --error takes a number >= 0, got '%s'", error_s);
 
+    int code = cli_check_output(c.output, is_mesh_path(input) ? "off obj ply stl"
+                                                              : "xy geojson json svg");
+    if (code) return code;
     if (is_mesh_path(input)) return hal3_command(input, level_s, level, max_error, &c);
     double t0 = cli_now();
     fl_hal2 hal;
-    int code = load_hal(input, &hal);
+    code = load_hal(input, &hal);
     if (code) return code;
     fl_error err;
     fl_polygon approx = {0};

@@ -276,8 +276,8 @@ int cmd_reconstruct(int argc, char **argv)
     fl_points p;
     double t0 = cli_now();
     if (fl_read_points(a.input, &p, &err)) return cli_report(&err);
-    int code;
-    code = p.dim == 2 ? run_2d(&c, &a, &p, t0) : run_3d(&c, &a, &p, t0);
+    int code = cli_check_output(c.output, p.dim == 2 ? "xy geojson json svg off" : "off obj ply stl");
+    if (!code) code = p.dim == 2 ? run_2d(&c, &a, &p, t0) : run_3d(&c, &a, &p, t0);
     fl_points_free(&p);
     return code;
 }

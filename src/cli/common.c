@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "cli/cli.h"
+#include "core/core.h"
 
 int cli_common_option(cli_common *c, int argc, char **argv, int *i)
 {
@@ -58,6 +59,27 @@ int cli_fail(int code, const char *fmt, ...)
     fputc('\n', stderr);
     va_end(ap);
     return code;
+}
+
+int cli_check_output(const char *path, const char *formats)
+{
+    if (!path) return 0;
+    char ext[16];
+    fl_path_extension(path, ext, sizeof ext);
+    size_t n = strlen(ext);
+    for (const char *f = formats; n && *f;) {
+        size_t len = strcspn(f, " ");
+        if (len == n && strncmp(f, ext, n) == 0) return 0;
+        f += len;
+        f += strspn(f, " ");
+    }
+    if (!n)
+        return cli_fail(cli_exit_code(FL_ERR_USAGE),
+                        "%s: no file extension to tell the output format (this command writes: %s)",
+                        path, formats);
+    return cli_fail(cli_exit_code(FL_ERR_USAGE),
+                    "%s: this command does not write '.%s' files (it writes: %s)", path, ext,
+                    formats);
 }
 
 double cli_now(void)

@@ -95,8 +95,9 @@ static void test_too_large_input_fails_cleanly_and_writes_nothing(void)
 
 /* Every command on the bundled inputs under limits tight enough to fail at different points:
  * each run succeeds (exit 0, its output written) or fails with exit 3 and a message, leaving
- * no output; never a signal or another code. Found no failure when written, but it runs every
- * out-of-memory path these inputs reach. */
+ * no output; never a signal or another code. Found no failure when written. It reaches the
+ * out-of-memory paths that these inputs hit at these four limits, not every allocation of
+ * every command (the fuzzers' small-allocation failures are not injected). */
 static void test_every_command_fails_cleanly_at_any_limit(void)
 {
     if (SANITIZED) return;

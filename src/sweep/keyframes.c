@@ -84,28 +84,157 @@ static void link_nodes(fl_sweep_keyframes *kf)
     }
 }
 
-/* Every internal node's exact radius over its vertices at the current positions (the leaves
- * hold them): each leaf corner is measured against all its ancestors' bases. */
-static void exact_radii(fl_sweep *s, const uint32_t *up)
+/* The exact radius of every internal node over its vertices at the current positions (the
+ * leaves hold them) for the bases `base` (9 doubles a node): each leaf corner is measured
+ * against all its ancestors' bases. Into eps[node], widened. */
+static void exact_radii(const fl_sweep *s, const uint32_t *up, const double *base, double *eps)
 {
     for (size_t i = 0; i < s->node_count; i++)
-        if (!fl_sweep_is_leaf(s->nodes + i)) s->nodes[i].eps = 0;
+        eps[i] = 0;
     for (size_t i = 0; i < s->node_count; i++) {
         const fl_sweep_node *leaf = s->nodes + i;
         if (!fl_sweep_is_leaf(leaf)) continue;
         for (uint32_t a = up[i]; a != UINT32_MAX; a = up[a]) {
-            fl_sweep_node *anc = s->nodes + a;
+            const double *v = base + 9 * (size_t)a;
             double bary[3], closest[3];
             for (int k = 0; k < 3; k++) {
-                double d2 = fl_sweep_triangle_closest(leaf->v + 3 * k, anc->v, anc->v + 3,
-                                                      anc->v + 6, bary, closest);
-                if (d2 > anc->eps) anc->eps = d2; /* squared until the end */
+                double d2 = fl_sweep_triangle_closest(leaf->v + 3 * k, v, v + 3, v + 6, bary,
+                                                      closest);
+                if (d2 > eps[a]) eps[a] = d2; /* squared until the end */
             }
         }
     }
     for (size_t i = 0; i < s->node_count; i++)
-        if (!fl_sweep_is_leaf(s->nodes + i))
-            s->nodes[i].eps = fl_sweep_widen(sqrt(s->nodes[i].eps), s->scale);
+        eps[i] = fl_sweep_widen(sqrt(eps[i]), s->scale);
+}
+
+/* Moments of a node's corners (with multiplicity) at frame 0 (p) and frame f (q): their
+ * count, sums, Σ p pᵀ and Σ p qᵀ, summed bottom-up. */
+typedef struct moments {
+    double n, p[3], q[3], pp[9], pq[9];
+} moments;
+
+static void add_moments(moments *m, const moments *c)
+{
+    m->n += c->n;
+    for (int i = 0; i < 9; i++) {
+        m->pp[i] += c->pp[i];
+        m->pq[i] += c->pq[i];
+        if (i < 3) m->p[i] += c->p[i], m->q[i] += c->q[i];
+    }
+}
+
+/* Solves (C + λI) x = y for symmetric C by Cramer's rule; λ keeps flat (coplanar) nodes
+ * solvable: the direction C does not see then maps to 0, i.e. into the fitted plane. */
+static void solve3(const double *c, double lambda, const double *y, double *x)
+{
+    double m[9];
+    for (int i = 0; i < 9; i++)
+        m[i] = c[i] + (i % 4 == 0 ? lambda : 0);
+    double det = m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) +
+                 m[2] * (m[3] * m[7] - m[4] * m[6]);
+    for (int k = 0; k < 3; k++) {
+        double t[9];
+        for (int i = 0; i < 9; i++)
+            t[i] = i % 3 == k ? y[i / 3] : m[i];
+        double dk = t[0] * (t[4] * t[8] - t[5] * t[7]) - t[1] * (t[3] * t[8] - t[5] * t[6]) +
+                    t[2] * (t[3] * t[7] - t[4] * t[6]);
+        x[k] = det != 0 && isfinite(dk / det) ? dk / det : 0;
+    }
+}
+
+/* The node's frame-0 base carried by the affine map that best fits (least squares) its
+ * corners' motion from frame 0 to frame f: x -> M (x − p̄) + q̄ with Mᵀ = C⁻¹ X, C and X the
+ * centred Σ p pᵀ and Σ p qᵀ. Unlike a rigid motion it follows stretches and shears, which a
+ * key-frame animation is full of; it is only a candidate (exactness never depends on it). */
+static void affine_base(const moments *m, const double *base0, double *out)
+{
+    double pm[3], qm[3], c[9], x[9], trace = 0;
+    for (int i = 0; i < 3; i++)
+        pm[i] = m->p[i] / m->n, qm[i] = m->q[i] / m->n;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            c[3 * i + j] = m->pp[3 * i + j] - m->n * pm[i] * pm[j];
+            x[3 * i + j] = m->pq[3 * i + j] - m->n * pm[i] * qm[j];
+        }
+    trace = c[0] + c[4] + c[8];
+    double mt[9]; /* Mᵀ, column j solving C col = X col j */
+    for (int j = 0; j < 3; j++) {
+        double y[3] = {x[j], x[3 + j], x[6 + j]}, col[3];
+        solve3(c, 1e-9 * trace + 1e-300, y, col);
+        for (int i = 0; i < 3; i++)
+            mt[3 * i + j] = col[i];
+    }
+    for (int k = 0; k < 3; k++) {
+        double d[3] = {base0[3 * k] - pm[0], base0[3 * k + 1] - pm[1], base0[3 * k + 2] - pm[2]};
+        for (int c2 = 0; c2 < 3; c2++)
+            out[3 * k + c2] = mt[c2] * d[0] + mt[3 + c2] * d[1] + mt[6 + c2] * d[2] + qm[c2];
+    }
+}
+
+/* The affine candidate bases of frame f for every internal node (leaves: their triangle). */
+static fl_status affine_bases(const fl_sweep_keyframes *kf, size_t f, double *cand,
+                              fl_error *err)
+{
+    const fl_sweep *s = kf->s;
+    moments *m = fl_alloc_array(s->node_count, sizeof *m);
+    if (!m) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for key frames");
+    const double *x0 = kf->xyz, *xf = kf->xyz + 3 * kf->nv * f, *row0 = kf->table;
+    for (size_t i = s->node_count; i-- > 0;) { /* children come after their parent */
+        const fl_sweep_node *node = s->nodes + i;
+        m[i] = (moments){0};
+        if (!fl_sweep_is_leaf(node)) {
+            add_moments(m + i, m + node->child[0]);
+            add_moments(m + i, m + node->child[1]);
+            affine_base(m + i, row0 + KF_STRIDE * i, cand + 9 * i);
+            continue;
+        }
+        for (int k = 0; k < 3; k++) {
+            size_t v = s->tri[3 * (size_t)node->element + k];
+            const double *p = x0 + 3 * v, *q = xf + 3 * v;
+            m[i].n += 1;
+            for (int a = 0; a < 3; a++) {
+                m[i].p[a] += p[a], m[i].q[a] += q[a];
+                cand[9 * i + 3 * k + a] = q[a];
+                for (int b = 0; b < 3; b++)
+                    m[i].pp[3 * a + b] += p[a] * p[b], m[i].pq[3 * a + b] += p[a] * q[b];
+            }
+        }
+    }
+    free(m);
+    return FL_OK;
+}
+
+/* Frame f's bases and radii: the carried (rigid-fit) base or the affine candidate, whichever
+ * gives the smaller exact radius, node by node. */
+static fl_status fit_frame(fl_sweep_keyframes *kf, size_t f, fl_error *err)
+{
+    fl_sweep *s = kf->s;
+    double *cand = fl_alloc_array(s->node_count, 9 * sizeof *cand);
+    double *mine = fl_alloc_array(s->node_count, 9 * sizeof *mine);
+    double *e_cand = fl_alloc_array(s->node_count, sizeof *e_cand);
+    double *e_mine = fl_alloc_array(s->node_count, sizeof *e_mine);
+    fl_status st = cand && mine && e_cand && e_mine
+                       ? affine_bases(kf, f, cand, err)
+                       : fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for key frames");
+    if (st == FL_OK) {
+        for (size_t i = 0; i < s->node_count; i++)
+            memcpy(mine + 9 * i, s->nodes[i].v, 9 * sizeof *mine);
+        exact_radii(s, kf->up, mine, e_mine);
+        exact_radii(s, kf->up, cand, e_cand);
+        for (size_t i = 0; i < s->node_count; i++) {
+            fl_sweep_node *node = s->nodes + i;
+            if (fl_sweep_is_leaf(node)) continue;
+            int take = e_cand[i] < e_mine[i];
+            node->eps = take ? e_cand[i] : e_mine[i];
+            if (take) memcpy(node->v, cand + 9 * i, 9 * sizeof *cand);
+        }
+    }
+    free(cand);
+    free(mine);
+    free(e_cand);
+    free(e_mine);
+    return st;
 }
 
 static void record_frame(fl_sweep_keyframes *kf, size_t f)
@@ -139,7 +268,8 @@ static fl_status record_frames(fl_sweep_keyframes *kf, const fl_mesh *mesh,
     for (size_t f = 1; f < kf->frames; f++) {
         st = fl_sweep_update_vertices(s, kf->xyz + 3 * kf->nv * f, err);
         if (st != FL_OK) return st;
-        exact_radii(s, kf->up);
+        st = fit_frame(kf, f, err);
+        if (st != FL_OK) return st;
         record_frame(kf, f);
     }
     return FL_OK;

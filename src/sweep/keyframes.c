@@ -218,8 +218,16 @@ static fl_status fit_frame(fl_sweep_keyframes *kf, size_t f, fl_error *err)
                        ? affine_bases(kf, f, cand, err)
                        : fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for key frames");
     if (st == FL_OK) {
-        for (size_t i = 0; i < s->node_count; i++)
+        for (size_t i = 0; i < s->node_count; i++) {
             memcpy(mine + 9 * i, s->nodes[i].v, 9 * sizeof *mine);
+            /* A fit blown up by huge or nearly flat input (|x| up to 1e150 squared in the
+             * moments) is no candidate: keep the distances finite. */
+            for (int k = 0; k < 9; k++)
+                if (!(fabs(cand[9 * i + k]) <= 1e152)) {
+                    memcpy(cand + 9 * i, mine + 9 * i, 9 * sizeof *cand);
+                    break;
+                }
+        }
         exact_radii(s, kf->up, mine, e_mine);
         exact_radii(s, kf->up, cand, e_cand);
         for (size_t i = 0; i < s->node_count; i++) {

@@ -119,17 +119,17 @@ static void check_mesh_keyframes(fl_mesh *m, int frames, int times, int nq)
 static void test_keyframes_torus_exact_at_intermediate_times(void)
 {
     fl_mesh m = cm_noisy_torus(40, 20, 0.1);
-    check_mesh_keyframes(&m, 6, 30, 25);
+    check_mesh_keyframes(&m, 6, 18, 20);
     cm_free(&m);
 }
 
 static void test_keyframes_messy_mesh_and_soup_exact(void)
 {
     fl_mesh m = cm_messy(10);
-    check_mesh_keyframes(&m, 5, 25, 25);
+    check_mesh_keyframes(&m, 5, 15, 20);
     cm_free(&m);
-    fl_mesh soup = cm_soup(300, 0.05);
-    check_mesh_keyframes(&soup, 5, 20, 25);
+    fl_mesh soup = cm_soup(200, 0.05);
+    check_mesh_keyframes(&soup, 5, 12, 20);
     cm_free(&soup);
 }
 
@@ -157,8 +157,8 @@ static void test_keyframes_degenerate_frames_exact(void)
     CHECK_STATUS(fl_sweep_keyframes_new(&m, xyz, 5, NULL, &kf, &err), FL_OK, &err);
     if (kf) {
         fl_mesh now = {nv, malloc(per * sizeof(double)), m.triangle_count, m.tri};
-        for (int i = 0; i <= 40; i++)
-            check_time(kf, &now, 4.0 * i / 40, 15);
+        for (int i = 0; i <= 24; i++)
+            check_time(kf, &now, 4.0 * i / 24, 15);
         for (int i = 0; i < 20; i++)
             check_time(kf, &now, kf_rand(0, 4), 15);
         free(now.xyz);

@@ -1,6 +1,7 @@
 /* Fuzzes fl_sweep_build / fl_sweep_polyline_build + fl_sweep_closest on small decoded shapes
  * (meshes of up to 12 vertices and 16 triangles of any topology, 2D/3D polylines of up to 16
- * points) and up to 8 queries; meshes also through the edge-collapse hierarchy
+ * points) and up to 8 queries; meshes also through the edge-collapse hierarchy and key frames
+ * (fl_sweep_keyframes_*), polylines also moved by fl_sweep_polyline_update
  * (fl_sweep_collapse_*: same input rules, same answers). Oracle: the exact answer's distance equals the brute-force
  * minimum over all elements (tests/sweep/sweep_oracle.h, long double, independent code) to a
  * relative 1e-9; inputs beyond the documented |x| <= 1e150 or NaN/Inf must be FL_ERR_INPUT
@@ -45,6 +46,52 @@ static void check_answers(const fl_closest *res, const double *q, size_t nq, int
                       best);
         }
     }
+}
+
+/* Moving shapes (docs/sweep.md "Moving shapes"): the shape moves to a second decoded position,
+ * a mesh through two key frames to a decoded time, a polyline by fl_sweep_polyline_update;
+ * out-of-range positions must be FL_ERR_INPUT, otherwise the answers equal brute force on the
+ * moved shape. */
+static void check_motion(fz_in *in, int kind, int dim, int closed, const double *pts,
+                         const uint32_t *tri, size_t nv, size_t nt, double qmax, fl_sweep *sw)
+{
+    double moved[3 * 16], frames[2 * 3 * 16], now3[3 * 16], q[3 * 8];
+    size_t count = (size_t)dim * nv, nq = fz_byte(in) % 9;
+    fz_coords(in, moved, count);
+    double t = fz_byte(in) / 255.0, mmax = 0;
+    int bad = out_of_range(moved, count, &mmax);
+    fz_coords(in, q, (size_t)dim * nq);
+    int qbad = out_of_range(q, (size_t)dim * nq, &mmax);
+    fl_error err;
+    memset(&err, 0, sizeof err);
+    fl_sweep_keyframes *kf = NULL;
+    const fl_sweep *use = sw;
+    fl_status st;
+    if (kind == 0) {
+        memcpy(frames, pts, count * sizeof *pts);
+        memcpy(frames + count, moved, count * sizeof *pts);
+        fl_mesh m = {nv, (double *)pts, nt, (uint32_t *)tri};
+        st = fl_sweep_keyframes_new(&m, frames, 2, NULL, &kf, &err);
+        if (st == FL_OK) st = fl_sweep_keyframes_set_time(kf, t, &err);
+        if (st == FL_OK) st = fl_sweep_keyframes_vertices(kf, now3, &err);
+        use = fl_sweep_keyframes_sweep(kf);
+    } else {
+        st = fl_sweep_polyline_update(sw, moved, &err);
+        for (size_t i = 0; i < nv; i++)
+            for (int c = 0; c < 3; c++)
+                now3[3 * i + c] = c < dim ? moved[(size_t)dim * i + c] : 0;
+    }
+    fz_check_status(st, &err, "moving shape");
+    FZ_ASSERT(bad ? st == FL_ERR_INPUT : st == FL_OK, "moving shape gave %d: %s", (int)st,
+              err.message);
+    if (st == FL_OK && !qbad) {
+        fl_closest res[8];
+        st = fl_sweep_closest(use, q, nq, 0, res, &err);
+        FZ_ASSERT(st == FL_OK, "closest on the moved shape failed: %s", err.message);
+        size_t elements = kind == 0 ? nt : closed ? nv : nv - 1;
+        check_answers(res, q, nq, dim, 0, fmax(qmax, mmax), kind, now3, tri, nv, elements);
+    }
+    fl_sweep_keyframes_free(kf);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -125,6 +172,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         fl_sweep_collapse_free(col);
     }
+    check_motion(&in, kind, dim, closed, pts, tri, nv, nt, fmax(qmax, maxabs), sw);
     fl_sweep_free(sw);
     return 0;
 }

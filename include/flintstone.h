@@ -1966,6 +1966,64 @@ fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const do
 
 /* end of sweep_collapse */
 
+/* ==== sweep_motion ======================================================================== */
+/* (section owned by src/sweep/keyframes.c and src/sweep/polyline_motion.c; docs/sweep.md
+ * "Moving shapes")
+ *
+ * More moving shapes for Meshsweeper (Guéziec §5.3). Key frames (§5.3, first method): a mesh
+ * whose vertices move linearly between recorded key frames; the hierarchy's base triangles and
+ * radii are computed once for every key frame, and at any time in between both are
+ * interpolated, the radius with a correction t(1-t)·(spread of the base corners' motion) that
+ * keeps every volume a bound (proof in docs/sweep.md), so queries stay exact at every time
+ * with O(nodes) arithmetic and no distance computation per time step. Polyline updates: a
+ * polyline hierarchy (2D or 3D) takes new point positions and inflates its capsules bottom-up
+ * (the polyline analogue of fl_sweep_update_vertices). Rigid motion of a polyline needs no
+ * update: fl_sweep_closest_posed. Nothing here may run while the hierarchy is being queried. */
+
+/* A mesh moving through key frames. */
+typedef struct fl_sweep_keyframes fl_sweep_keyframes;
+
+/* Records the key frames of a deforming mesh: `mesh` gives the triangles and the vertex count
+ * (its own xyz is not used); `frames` holds frame_count >= 1 frames of 3 * vertex_count
+ * doubles each (finite, |x| <= 1e150), frame f starting at frames + 3 * vertex_count * f.
+ * Builds the hierarchy on frame 0 (fl_sweep_build rules), carries it to every other frame and
+ * stores each node's base triangle and exact radius per frame: O(F·T log T) once, 80 bytes a
+ * node a frame. The time starts at 0. FL_ERR_USAGE (NULL), FL_ERR_INPUT (bad mesh or
+ * coordinate), FL_ERR_NOMEM. Free with fl_sweep_keyframes_free. */
+fl_status fl_sweep_keyframes_new(const fl_mesh *mesh, const double *frames, size_t frame_count,
+                                 const fl_sweep_options *opt, fl_sweep_keyframes **out,
+                                 fl_error *err);
+
+/* Frees the key frames and their hierarchy; NULL is a no-op. */
+void fl_sweep_keyframes_free(fl_sweep_keyframes *kf);
+
+/* Moves the mesh to time t in [0, frame_count - 1]: between frames f and f + 1 (s = t - f)
+ * vertex i is at (1 - s)·x_f + s·x_{f+1} (computed exactly so, per coordinate), and every
+ * bounding volume is interpolated in O(nodes). Queries on fl_sweep_keyframes_sweep are then
+ * exact for that mesh; cursors on it stay valid and widen their kept queues by the largest
+ * vertex move (§5.2). FL_ERR_USAGE (NULL), FL_ERR_INPUT (t not finite or out of range; the
+ * time is then unchanged). */
+fl_status fl_sweep_keyframes_set_time(fl_sweep_keyframes *kf, double t, fl_error *err);
+
+/* The hierarchy at the current time, for fl_sweep_closest, cursors, fl_sweep_knearest and
+ * fl_sweep_within (never for fl_sweep_update_vertices); owned by kf. */
+const fl_sweep *fl_sweep_keyframes_sweep(const fl_sweep_keyframes *kf);
+
+/* The vertex positions at the current time (3 * vertex_count doubles into xyz), the mesh the
+ * queries answer for. FL_ERR_USAGE for NULL. */
+fl_status fl_sweep_keyframes_vertices(const fl_sweep_keyframes *kf, double *xyz, fl_error *err);
+
+/* Moves the points of a polyline hierarchy (from fl_sweep_polyline_build) to `points` (same
+ * count n and dimension as built, n * dim doubles, finite with |x| <= 1e150) and updates its
+ * capsules bottom-up in O(n) (each radius the smallest of: old radius inflated by the node's
+ * largest point move plus its end points' move, the children's capsules' reach, or the exact
+ * radius for nodes of <= 128 segments): answers afterwards are exact for the moved polyline.
+ * Cursors stay valid (§5.2). FL_ERR_USAGE for NULL or a mesh hierarchy, FL_ERR_INPUT for a bad
+ * coordinate (the hierarchy is then unchanged), FL_ERR_NOMEM (unchanged too). */
+fl_status fl_sweep_polyline_update(fl_sweep *sweep, const double *points, fl_error *err);
+
+/* end of sweep_motion */
+
 #ifdef __cplusplus
 }
 #endif

@@ -124,6 +124,7 @@ fl_status fl_sweep_polyline_build(const double *points, size_t n, int dim, int c
     st = fl_sweep_alloc(dim, 0, closed ? n : n - 1, &s, err);
     if (st == FL_OK) {
         s->scale = scale;
+        s->vertex_count = n; /* for fl_sweep_polyline_update (polyline_motion.c) */
         st = fit_chains(s, xyz, n, opt, err);
     }
     free(xyz);

@@ -108,4 +108,11 @@ static inline double fl_sweep_box_dist2(const double *b, const double *q)
 /* Allocates the sweep and its node array (2 * elements - 1 nodes). */
 fl_status fl_sweep_alloc(int dim, int triangles, size_t elements, fl_sweep **out, fl_error *err);
 
+/* ---- moving shapes (h-sweepdyn: keyframes.c, polyline_motion.c) ----
+ * For a polyline hierarchy, fl_sweep.vertex_count is its point count n (tri stays NULL):
+ * leaf e is the segment p_e p_{(e+1) mod n} and an internal node's base is its chain's chord,
+ * which fl_sweep_polyline_update moves with the chain's end points. A key-frame hierarchy
+ * (keyframes.c) is an ordinary mesh hierarchy whose nodes are rewritten at every time. */
+/* ---- end of moving shapes ---- */
+
 #endif /* FL_SWEEP_INTERNAL_H */

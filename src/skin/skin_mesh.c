@@ -1,15 +1,15 @@
 /* Triangulating skin^t(B): marching tetrahedra on the Kuhn subdivision of a cubic grid, with
- * every vertex moved onto the skin by bisection of the skin function along its grid edge.
+ * every vertex placed on the skin along its grid edge (skin_root.c: in closed form from the
+ * mixed-cell quadric when both ends share a cell, else regula falsi).
  *
  * Why this is a closed 2-manifold for every input: the six Kuhn tetrahedra of every cube (the
  * paths from corner 000 to 111) fit across cube faces, so together they form one conforming
  * triangulation of the visited cubes. Each grid point gets one label, inside (G < 0) or not,
  * so the surface is the boundary of the union of "inside" regions of the piecewise-linear
  * interpolant at a regular value; it has no boundary and every edge lies in two triangles.
- * Cubes outside every ball's bounding box are not visited: their corners lie outside the
- * union of balls, which contains body^t(B) (body^t is inside body^1 = union B, §6.1), so no
- * such cube has an inside corner and skipping it drops no triangle. Bisection moves vertices
- * along their edges without changing any incidence. */
+ * Only cubes with corners of both labels carry triangles; the cubes skipped (cube_class: far
+ * from every ball, or deep inside one shrunk ball) provably have one label on all corners, so
+ * skipping them drops no triangle. Placing vertices along their edges changes no incidence. */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>

@@ -2,13 +2,15 @@
  * (Skin_surface_3, Kruithof & Vegter's mesher) of a ball file into a Polyhedron_3.
  *   cgal_skin BALLS.xyzw T [OUT.off]
  * BALLS: one "x y z w" line a ball (w = squared radius, '#' comments), as flintstone reads.
- * Prints "RESULT seconds=<wall> vertices=<V> faces=<F>"; the timed region is the mesher alone
- * (the balls are parsed before). Kernel: Exact_predicates_inexact_constructions_kernel. */
+ * Prints "RESULT seconds=<wall> cpu=<process CPU> vertices=<V> faces=<F>"; the timed region is
+ * the mesher alone (the balls are parsed before, the mesh written after). Kernel:
+ * Exact_predicates_inexact_constructions_kernel. */
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/make_skin_surface_mesh_3.h>
 
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -38,12 +40,16 @@ int main(int argc, char **argv)
     }
     double t = std::atof(argv[2]);
     Polyhedron p;
+    timespec c0, c1;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
     auto t0 = std::chrono::steady_clock::now();
     // grow_balls = false: the skin of the balls as given (CGAL grows them by 1/t by default)
     CGAL::make_skin_surface_mesh_3(p, balls.begin(), balls.end(), t, 0, false);
     auto t1 = std::chrono::steady_clock::now();
-    std::printf("RESULT seconds=%.6f vertices=%zu faces=%zu\n",
-                std::chrono::duration<double>(t1 - t0).count(), p.size_of_vertices(),
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+    double cpu = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
+    std::printf("RESULT seconds=%.6f cpu=%.6f vertices=%zu faces=%zu\n",
+                std::chrono::duration<double>(t1 - t0).count(), cpu, p.size_of_vertices(),
                 p.size_of_facets());
     if (argc > 3) {
         std::ofstream out(argv[3]);

@@ -1,14 +1,17 @@
-#!/usr/bin/env bash
 # `flintstone skin --balls` against CGAL's Skin_surface_3 mesher (bench/peers/cgal_skin.cpp,
 # CGAL::make_skin_surface_mesh_3) on the same ball set and shrink factor t = 0.5, in the same
-# run, alternately BENCH_ROUNDS times each. Seconds: ours is the `seconds` of --json (reading the
-# balls + meshing), CGAL's the mesher call alone. Ball sets (generated, fixed seeds): random
-# balls in a cube ("random N") and a chain of balls along a helix ("helix N"). Our mesh is run
-# at the default cell and at a coarser cell (SKIN_COARSE_CELL_FACTOR, default 3x) closer to
-# CGAL's mesh size. Notes give both mesh sizes and the largest distance from the vertices of
-# each mesh to the other mesh (`flintstone closest`, exact point-to-mesh distances; a sampled
-# lower bound of the Hausdorff distance between the two meshes) and the certified Hausdorff
-# distance between the two surfaces (`flintstone hausdorff --both`, [lower, upper]).
+# run, alternately BENCH_ROUNDS times each. Both sides are timed in-process around the mesher
+# call alone, wall and process CPU time (the balls are read before, the mesh written after):
+# ours is fl_skin_mesh with its stats (bench/ours_skin.c: regular triangulation, mixed-complex
+# index, marching, the vertex-offset check), CGAL's make_skin_surface_mesh_3. The ROW's seconds
+# are wall medians, its ratio the CPU-time ratio (steadier on the shared machine); notes give
+# both CPU medians. Ball sets (generated, fixed seeds): random balls in a cube ("random N") and a
+# chain of balls along a helix ("helix N"). Our mesh is run at the default cell and at a coarser
+# cell (SKIN_COARSE_CELL_FACTOR, default 3x) closer to CGAL's mesh size. Notes give both mesh
+# sizes and the largest distance from the vertices of each mesh to the other mesh (`flintstone
+# closest`, exact point-to-mesh distances; a sampled lower bound of the Hausdorff distance
+# between the two meshes) and the certified Hausdorff distance between the two surfaces
+# (`flintstone hausdorff --both`, [lower, upper]).
 set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -18,7 +21,9 @@ mkdir -p "$out" "$BENCH_BIN"
 cmake --build "$build" -j 2 --target flintstone >/dev/null
 fl=$build/flintstone
 peer=$BENCH_BIN/cgal_skin
-[ -x "$peer" ] || g++ -O2 -DNDEBUG -o "$peer" "$root/bench/peers/cgal_skin.cpp" -lgmp -lmpfr
+[ "$peer" -nt "$root/bench/peers/cgal_skin.cpp" ] || g++ -O2 -DNDEBUG -o "$peer" "$root/bench/peers/cgal_skin.cpp" -lgmp -lmpfr
+ours=$BENCH_BIN/ours_skin
+cc -O2 -std=c11 -I"$root/include" -o "$ours" "$root/bench/ours_skin.c" "$build/libflintstone.a" -lm
 
 gen_random() { # N SEED: N balls, centres in [0, 2 N^(1/3)]^3, radii in [0.6, 1.2]
   awk -v n="$1" -v seed="$2" 'BEGIN { srand(seed); s = 2 * n ^ (1 / 3);
@@ -35,32 +40,35 @@ max_dist() { # MESH POINTS.xyz
   "$fl" closest "$1" "$2" --json | sed -n 's/.*"max_distance":\([^,}]*\).*/\1/p'
 }
 
-run_case() { # NAME BALLS CELL_ARGS...
-  local name=$1 balls=$2
-  shift 2
-  local o_times="" p_times="" o_json p_line
+run_case() { # NAME BALLS CELL (0: the default cell)
+  local name=$1 balls=$2 cell=$3
+  local o_times="" p_times="" o_cpus="" p_cpus="" o_line p_line
   for ((r = 0; r < BENCH_ROUNDS; r++)); do
-    o_json=$("$fl" skin --balls "$balls" --t 0.5 "$@" -o "$out/ours.off" --json) ||
+    o_line=$("$ours" "$balls" 0.5 "$cell" "$out/ours.off" | grep '^RESULT') ||
       { echo "ERROR|skin $name|ours failed"; return 0; }
     p_line=$("$peer" "$balls" 0.5 "$out/cgal.off" | grep '^RESULT') ||
       { echo "ERROR|skin $name|cgal failed"; return 0; }
-    o_times+="$(sed -n 's/.*"seconds":\([^,}]*\).*/\1/p' <<<"$o_json")"$'\n'
+    o_times+="$(field seconds "$o_line")"$'\n'
     p_times+="$(field seconds "$p_line")"$'\n'
+    o_cpus+="$(field cpu "$o_line")"$'\n'
+    p_cpus+="$(field cpu "$p_line")"$'\n'
   done
   off_vertices "$out/ours.off" >"$out/ours.xyz"
   off_vertices "$out/cgal.off" >"$out/cgal.xyz"
-  local d1 d2 ov of euler hd
+  local d1 d2 hd o_cpu p_cpu
   d1=$(max_dist "$out/cgal.off" "$out/ours.xyz")
   d2=$(max_dist "$out/ours.off" "$out/cgal.xyz")
   # the certified Hausdorff distance between the two meshes' surfaces ([lower, upper])
   hd=$("$fl" hausdorff "$out/ours.off" "$out/cgal.off" --both --relative 1e-3 --budget 60 --json |
     sed -n 's/.*"hausdorff":\[\([^]]*\)\].*/\1/p')
-  ov=$(sed -n 's/.*"vertices":\([0-9]*\).*/\1/p' <<<"$o_json")
-  of=$(sed -n 's/.*"faces":\([0-9]*\).*/\1/p' <<<"$o_json")
-  euler=$(sed -n 's/.*"euler":\(-*[0-9]*\).*/\1/p' <<<"$o_json")
-  printf 'ROW|skin %s|%s|CGAL make_skin_surface_mesh_3|%s|-|ours V=%s F=%s Euler %s, CGAL V=%s F=%s; max vertex-to-other-mesh distance ours->CGAL %.3g, CGAL->ours %.3g; Hausdorff [%s]\n' \
-    "$name" "$(median <<<"${o_times%$'\n'}")" "$(median <<<"${p_times%$'\n'}")" "$ov" "$of" \
-    "$euler" "$(field vertices "$p_line")" "$(field faces "$p_line")" "$d1" "$d2" "$hd"
+  o_cpu=$(median <<<"${o_cpus%$'\n'}")
+  p_cpu=$(median <<<"${p_cpus%$'\n'}")
+  printf 'ROW|skin %s|%s|CGAL make_skin_surface_mesh_3|%s|%s|CPU s ours %s, CGAL %s (load %s); ours V=%s F=%s Euler %s cell %s, CGAL V=%s F=%s; max vertex-to-other-mesh distance ours->CGAL %.3g, CGAL->ours %.3g; Hausdorff [%s]\n' \
+    "$name" "$(median <<<"${o_times%$'\n'}")" "$(median <<<"${p_times%$'\n'}")" \
+    "$(awk -v o="$o_cpu" -v p="$p_cpu" 'BEGIN { printf "%.2f", o / p }')" "$o_cpu" "$p_cpu" \
+    "$(cut -d' ' -f1 /proc/loadavg)" "$(field vertices "$o_line")" "$(field faces "$o_line")" \
+    "$(field euler "$o_line")" "$(field cell "$o_line")" "$(field vertices "$p_line")" \
+    "$(field faces "$p_line")" "$d1" "$d2" "$hd"
 }
 
 factor=${SKIN_COARSE_CELL_FACTOR:-3}
@@ -70,10 +78,10 @@ for spec in "${cases[@]}"; do
   set -- $spec
   balls=$out/$1_$2.xyzw
   if [ "$1" = random ]; then gen_random "$2" "$3" >"$balls"; else gen_helix "$2" >"$balls"; fi
-  run_case "$1 $2 (default cell)" "$balls"
-  # default cell = sqrt(t) r_min / 4; the coarse one is factor times that
+  run_case "$1 $2 (default cell)" "$balls" 0
+  # sqrt(t) r_min / 4 (the default cell before the neck rule); the coarse one is factor times it
   rmin=$(awk 'NR == 1 || $4 < m { m = $4 } END { printf "%.9g", sqrt(m) }' "$balls")
-  run_case "$1 $2 (cell x$factor)" "$balls" --cell "$(awk -v r="$rmin" -v f="$factor" \
+  run_case "$1 $2 (cell x$factor)" "$balls" "$(awk -v r="$rmin" -v f="$factor" \
     'BEGIN { printf "%.9g", f * sqrt(0.5) * r / 4 }')"
 done
 
@@ -111,5 +119,5 @@ for spec in "${eps_cases[@]}"; do
     $1 + d * (rand() - 0.5), $2 + d * (rand() - 0.5), $3 + d * (rand() - 0.5), $4 }' \
     "$out/star.xyzw" >"$out/star_p.xyzw"
   run_case "$name, B* of $(wc -l <"$out/star.xyzw") balls, centres perturbed ${SKIN_EPS_PERTURB:-1e-7}" \
-    "$out/star_p.xyzw" --cell "$(sed -n 's/.*"cell":\([^,}]*\).*/\1/p' <<<"$e_json")"
+    "$out/star_p.xyzw" "$(sed -n 's/.*"cell":\([^,}]*\).*/\1/p' <<<"$e_json")"
 done

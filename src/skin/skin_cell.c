@@ -156,25 +156,36 @@ static int walk(const fl_skin_function *sk, const double *x, uint32_t *cur, int 
     return 0;
 }
 
-double skin_value_walk(const fl_skin_function *sk, const double x[3], uint32_t *start)
+uint32_t skin_locate(const fl_skin_function *sk, const double x[3], uint32_t *start, double *val)
 {
-    if (!sk->walkable || sk->simplex_count == 0) return skin_value_scan(sk, x);
-    if (!(fabs(x[0]) <= 1e150 && fabs(x[1]) <= 1e150 && fabs(x[2]) <= 1e150)) return HUGE_VAL;
-    double val = HUGE_VAL;
+    *val = HUGE_VAL;
+    if (!sk->walkable || sk->simplex_count == 0) {
+        *val = skin_value_scan(sk, x);
+        return SKIN_NO_CELL;
+    }
+    if (!(fabs(x[0]) <= 1e150 && fabs(x[1]) <= 1e150 && fabs(x[2]) <= 1e150)) return SKIN_NO_CELL;
     uint32_t cur = *start < sk->simplex_count ? *start : 0;
-    if (walk(sk, x, &cur, SKIN_WALK_NEAR, &val)) {
+    if (walk(sk, x, &cur, SKIN_WALK_NEAR, val)) {
         *start = cur;
-        return val;
+        return cur;
     }
     /* a far start: restart next to x from the index (or go on walking outside it) */
     size_t cell = 0;
     if (skin_index_cell(sk, x, &cell) && sk->cell_start[cell] < sk->cell_start[cell + 1])
         cur = sk->cell_item[sk->cell_start[cell]];
-    if (walk(sk, x, &cur, SKIN_WALK_FAR, &val)) {
+    if (walk(sk, x, &cur, SKIN_WALK_FAR, val)) {
         *start = cur;
-        return val;
+        return cur;
     }
-    return skin_value_scan(sk, x);
+    *val = skin_value_scan(sk, x);
+    return SKIN_NO_CELL;
+}
+
+double skin_value_walk(const fl_skin_function *sk, const double x[3], uint32_t *start)
+{
+    double val;
+    skin_locate(sk, x, start, &val);
+    return val;
 }
 
 double fl_skin_function_value(const fl_skin_function *skin, const double x[3])

@@ -218,6 +218,7 @@ typedef struct dmarch {
     u64map vert; /* edge (lo index << 32 | hi index) -> vertex */
     fl_vec xyz, tri;
     size_t evaluations;
+    uint32_t hint; /* the walk's start */
 } dmarch;
 
 static uint32_t dedge_vertex(dmarch *m, uint32_t a, uint32_t b)
@@ -227,7 +228,8 @@ static uint32_t dedge_vertex(dmarch *m, uint32_t a, uint32_t b)
     if (m->vert.key[s] == key) return m->vert.val[s];
     uint32_t ins = m->in[a] ? a : b, outs = m->in[a] ? b : a;
     double x[3];
-    skin_edge_root(m->g, m->p + 3 * (size_t)ins, m->p + 3 * (size_t)outs, x, &m->evaluations);
+    skin_edge_root(m->g, m->p + 3 * (size_t)ins, m->p + 3 * (size_t)outs, SKIN_NO_CELL,
+                   SKIN_NO_CELL, &m->hint, x, &m->evaluations);
     uint32_t v = (uint32_t)m->xyz.count;
     if (fl_vec_push(&m->xyz, x, 1)) return UINT32_MAX;
     return map_put(&m->vert, key, v) == SIZE_MAX ? UINT32_MAX : v;
@@ -364,12 +366,7 @@ fl_status skin_graded_mesh(const fl_skin_function *g, const double *xyzw, size_t
         stats->cubes = ot.leaves;
         stats->evaluations = m.evaluations;
     }
-    if (!st) {
-        out->vertex_count = m.xyz.count;
-        out->triangle_count = m.tri.count;
-        out->xyz = fl_vec_release(&m.xyz);
-        out->tri = fl_vec_release(&m.tri);
-    }
+    if (!st) skin_hand_over(&m.xyz, &m.tri, out);
     fl_vec_free(&ot.pts);
     fl_vec_free(&m.xyz);
     fl_vec_free(&m.tri);

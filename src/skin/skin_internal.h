@@ -6,6 +6,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "core/core.h"
 #include "flintstone.h"
 
 /* One simplex X of the regular triangulation of the balls (a vertex, edge, triangle or
@@ -84,10 +85,26 @@ int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cel
 /* end of mixed-cell point location */
 
 
-/* A zero of G on the segment a -> b, G(a) < 0 <= G(b), to rounding (skin_mesh.c); adds the
- * evaluations of G to *evaluations. */
-void skin_edge_root(const fl_skin_function *g, const double a[3], const double b[3], double x[3],
-                    size_t *evaluations);
+/* ==== exact vertices on the skin (skin_root.c) ====
+ * skin_locate: the mixed cell of x (a simplex index, *start updated to it) with *val = G(x), or
+ * SKIN_NO_CELL when the walk gave up or the function is not walkable (*val then from the scan).
+ * skin_edge_root: a zero of G on the segment a -> b, G(a) < 0 <= G(b), to rounding; ca and cb
+ * are the mixed cells of a and b when the caller knows them (else SKIN_NO_CELL). When both ends
+ * lie in one mixed cell the segment does too (mixed cells are convex) and G on it is that
+ * cell's quadric, a quadratic in the parameter, solved in closed form without evaluating G;
+ * otherwise regula falsi until the bracket's ends share a cell. *hint: a walk start (the
+ * caller's, or NULL for the function's shared one). Adds the evaluations of G to *evaluations.
+ * skin_vertex_offset: max over the points of |G(v)| / |grad G(v)|, the gradient of the located
+ * cell's quadric (central differences at step 1e-5 h where no cell is found).
+ * skin_hand_over: moves the vertex (double[3]) and triangle (uint32_t[3]) vectors into out. */
+#define SKIN_NO_CELL UINT32_MAX
+uint32_t skin_locate(const fl_skin_function *sk, const double x[3], uint32_t *start, double *val);
+void skin_edge_root(const fl_skin_function *g, const double a[3], const double b[3], uint32_t ca,
+                    uint32_t cb, uint32_t *hint, double x[3], size_t *evaluations);
+double skin_vertex_offset(const fl_skin_function *g, const double *xyz, size_t count, double h,
+                          size_t *evaluations);
+void skin_hand_over(fl_vec *xyz, fl_vec *tri, fl_mesh *out);
+/* end of exact vertices on the skin */
 
 /* The graded mesher (skin_graded.c): marching tetrahedra on the Delaunay tetrahedralization of
  * the corners of an octree refined by the local feature size of the skin. Same contract as the

@@ -1,15 +1,15 @@
 /* Triangulating skin^t(B): marching tetrahedra on the Kuhn subdivision of a cubic grid, with
- * every vertex moved onto the skin by bisection of the skin function along its grid edge.
+ * every vertex placed on the skin along its grid edge (skin_root.c: in closed form from the
+ * mixed-cell quadric when both ends share a cell, else regula falsi).
  *
  * Why this is a closed 2-manifold for every input: the six Kuhn tetrahedra of every cube (the
  * paths from corner 000 to 111) fit across cube faces, so together they form one conforming
  * triangulation of the visited cubes. Each grid point gets one label, inside (G < 0) or not,
  * so the surface is the boundary of the union of "inside" regions of the piecewise-linear
  * interpolant at a regular value; it has no boundary and every edge lies in two triangles.
- * Cubes outside every ball's bounding box are not visited: their corners lie outside the
- * union of balls, which contains body^t(B) (body^t is inside body^1 = union B, §6.1), so no
- * such cube has an inside corner and skipping it drops no triangle. Bisection moves vertices
- * along their edges without changing any incidence. */
+ * Only cubes with corners of both labels carry triangles; the cubes skipped (cube_class: far
+ * from every ball, or deep inside one shrunk ball) provably have one label on all corners, so
+ * skipping them drops no triangle. Placing vertices along their edges changes no incidence. */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -24,14 +24,32 @@
 
 /* ---- the marching state ---- */
 
+/* What the marcher keeps per grid point when the visited cubes' x-y extent is small (the usual
+ * case): its label and the vertices on its 7 edges towards higher coordinates, in two planes
+ * indexed by z parity. The cubes come sorted by z, and a cube of layer z only touches points of
+ * planes z and z + 1, so a slot whose stamp z differs from the point's is stale (a finished
+ * plane) and is reset on first use: no hashing, no clearing. */
+typedef struct slab_point {
+    uint32_t z;       /* the plane the slot holds, UINT32_MAX for none */
+    uint32_t lab;     /* label(), LABEL_UNSET before the first evaluation */
+    uint32_t vert[7]; /* vertex on the edge p -> p + dir (index dir - 1), UINT32_MAX for none */
+} slab_point;
+
+/* The largest x-y extent (in grid points) kept in slabs (2 x 36 MB); beyond it hash maps. */
+#define SLAB_MAX_POINTS ((size_t)1 << 19)
+
 typedef struct marcher {
     const fl_skin_function *g;
     double origin[3], h;
-    u64map label; /* grid point -> 1 inside, 0 outside */
+    slab_point *slab; /* 2 planes of dx * dy points from (xlo, ylo), or NULL: the maps below */
+    uint64_t xlo, ylo;
+    size_t dx, dy;
+    u64map label; /* grid point -> label() */
     u64map vert;  /* grid edge (point << 3 | direction) -> vertex index */
     fl_vec xyz;   /* double[3] per vertex */
     fl_vec tri;   /* uint32_t[3] per triangle */
     size_t evaluations;
+    uint32_t hint; /* the walk's start: the mixed cell of the previous evaluation */
 } marcher;
 
 static uint64_t pack(const uint64_t p[3])
@@ -45,98 +63,77 @@ static void grid_point(const marcher *m, const uint64_t p[3], double x[3])
         x[c] = m->origin[c] + m->h * (double)p[c];
 }
 
-static double eval(marcher *m, const double x[3])
+/* The label of grid point p: bit 0 inside (G < 0), the bits above its mixed cell (LABEL_NO_CELL
+ * when the walk found none); UINT32_MAX on allocation failure. */
+#define LABEL_NO_CELL ((UINT32_MAX >> 1) - 1)
+#define LABEL_UNSET UINT32_MAX
+
+/* p's slot in the slabs, reset when it holds a finished plane. */
+static slab_point *slab_at(marcher *m, const uint64_t p[3])
 {
-    m->evaluations++;
-    return fl_skin_function_value(m->g, x);
+    slab_point *s = m->slab + (size_t)(p[2] & 1) * m->dx * m->dy +
+                    (size_t)(p[1] - m->ylo) * m->dx + (size_t)(p[0] - m->xlo);
+    if (s->z != (uint32_t)p[2]) {
+        s->z = (uint32_t)p[2];
+        s->lab = LABEL_UNSET;
+        memset(s->vert, 0xff, sizeof s->vert);
+    }
+    return s;
 }
 
-/* 1 when grid point p is inside the skin body, 0 outside, -1 on allocation failure. */
-static int label(marcher *m, const uint64_t p[3])
+static uint32_t evaluate_label(marcher *m, const uint64_t p[3])
 {
+    double x[3], val;
+    grid_point(m, p, x);
+    m->evaluations++;
+    uint32_t c = skin_locate(m->g, x, &m->hint, &val);
+    return (c < LABEL_NO_CELL ? c : LABEL_NO_CELL) << 1 | (val < 0);
+}
+
+static uint32_t label(marcher *m, const uint64_t p[3])
+{
+    if (m->slab) {
+        slab_point *s = slab_at(m, p);
+        if (s->lab == LABEL_UNSET) s->lab = evaluate_label(m, p);
+        return s->lab;
+    }
     uint64_t key = pack(p);
     size_t s = map_slot(&m->label, key);
-    if (m->label.key[s] == key) return (int)m->label.val[s];
-    double x[3];
-    grid_point(m, p, x);
-    int in = eval(m, x) < 0;
-    return map_put(&m->label, key, (uint32_t)in) == SIZE_MAX ? -1 : in;
+    if (m->label.key[s] == key) return m->label.val[s];
+    uint32_t lab = evaluate_label(m, p);
+    return map_put(&m->label, key, lab) == SIZE_MAX ? UINT32_MAX : lab;
 }
 
-/* A zero of G on the segment a -> b with G(a) < 0 <= G(b), written to x: the Illinois variant
- * of regula falsi (G is smooth along the segment, so it converges superlinearly) with a
- * bisection step whenever a step shrinks the bracket by less than half; it stops when the
- * bracket no longer shrinks, so x is within a rounding error of the skin. Adds the evaluations
- * of G to *evaluations. Shared by both meshers (skin_internal.h). */
-void skin_edge_root(const fl_skin_function *g, const double a[3], const double b[3], double x[3],
-                    size_t *evaluations)
+static uint32_t label_cell(uint32_t lab)
 {
-    /* parameter s in [lo, hi] along a -> b; G(lo) < 0 <= G(hi) */
-    double lo = 0, hi = 1, glo = fl_skin_function_value(g, a), ghi = fl_skin_function_value(g, b);
-    size_t ev = 2;
-    int side = 0;
-    for (int it = 0; it < 200 && glo < 0 && ghi > 0; it++) {
-        double width = hi - lo;
-        double s_new = lo + (hi - lo) * (-glo / (ghi - glo));
-        if (!(s_new > lo && s_new < hi)) s_new = 0.5 * (lo + hi);
-        for (int c = 0; c < 3; c++)
-            x[c] = a[c] + s_new * (b[c] - a[c]);
-        double gx = fl_skin_function_value(g, x);
-        ev++;
-        if (gx < 0) {
-            lo = s_new;
-            glo = gx;
-            if (side == -1) ghi *= 0.5; /* Illinois: the stale end would stall regula falsi */
-            side = -1;
-        } else {
-            hi = s_new;
-            ghi = gx;
-            if (side == 1) glo *= 0.5;
-            side = 1;
-        }
-        if (hi - lo > 0.5 * width) { /* slow step: bisect once */
-            double mid = 0.5 * (lo + hi);
-            if (mid <= lo || mid >= hi) break;
-            for (int c = 0; c < 3; c++)
-                x[c] = a[c] + mid * (b[c] - a[c]);
-            double gm = fl_skin_function_value(g, x);
-            ev++;
-            if (gm < 0) {
-                lo = mid;
-                glo = gm;
-            } else {
-                hi = mid;
-                ghi = gm;
-            }
-            side = 0;
-        }
-        if (!(hi - lo > 4 * DBL_EPSILON)) break;
-    }
-    /* the end with the smaller |G| (the halved Illinois values are not G: re-evaluate) */
-    double xl[3], xh[3];
-    for (int c = 0; c < 3; c++) {
-        xl[c] = a[c] + lo * (b[c] - a[c]);
-        xh[c] = a[c] + hi * (b[c] - a[c]);
-    }
-    double gl = fabs(fl_skin_function_value(g, xl)), gh = fabs(fl_skin_function_value(g, xh));
-    *evaluations += ev + 2;
-    memcpy(x, gl <= gh ? xl : xh, sizeof(xl));
+    return lab >> 1 == LABEL_NO_CELL ? SKIN_NO_CELL : lab >> 1;
 }
 
 /* The vertex on grid edge p -> p + dir (dir a nonzero 0/1 vector, bits x=1 y=2 z=4), placed by
- * skin_edge_root. Returns UINT32_MAX on allocation failure. */
-static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, int p_inside)
+ * skin_edge_root from the labels lp, lq of p and p + dir. UINT32_MAX on allocation failure. */
+static uint32_t edge_vertex(marcher *m, const uint64_t p[3], unsigned dir, uint32_t lp,
+                            uint32_t lq)
 {
     uint64_t key = pack(p) << 3 | dir;
-    size_t s = map_slot(&m->vert, key);
-    if (m->vert.key[s] == key) return m->vert.val[s];
+    uint32_t *slot = NULL;
+    size_t s = 0;
+    if (m->slab) {
+        slot = &slab_at(m, p)->vert[dir - 1];
+        if (*slot != UINT32_MAX) return *slot;
+    } else {
+        s = map_slot(&m->vert, key);
+        if (m->vert.key[s] == key) return m->vert.val[s];
+    }
     uint64_t q[3] = {p[0] + (dir & 1), p[1] + (dir >> 1 & 1), p[2] + (dir >> 2 & 1)};
     double a[3], b[3], x[3];
+    int p_inside = lp & 1;
     grid_point(m, p_inside ? p : q, a);
     grid_point(m, p_inside ? q : p, b);
-    skin_edge_root(m->g, a, b, x, &m->evaluations);
+    skin_edge_root(m->g, a, b, label_cell(p_inside ? lp : lq), label_cell(p_inside ? lq : lp),
+                   &m->hint, x, &m->evaluations);
     uint32_t v = (uint32_t)m->xyz.count;
     if (fl_vec_push(&m->xyz, x, 1)) return UINT32_MAX;
+    if (slot) return *slot = v;
     return map_put(&m->vert, key, v) == SIZE_MAX ? UINT32_MAX : v;
 }
 
@@ -161,6 +158,7 @@ typedef struct tet_corner {
     uint64_t p[3];
     double local[3]; /* corner offset inside the cube, 0 or 1 per axis */
     int in;
+    uint32_t lab; /* label() */
 } tet_corner;
 
 /* The vertex on the edge between corners a and b (one inside, one outside) and its doubled
@@ -177,7 +175,7 @@ static uint32_t corner_edge(marcher *m, const tet_corner *a, const tet_corner *b
         dir |= (unsigned)(hi->p[c] - lo->p[c]) << c;
         mid[c] = a->local[c] + b->local[c];
     }
-    return edge_vertex(m, lo->p, dir, lo->in);
+    return edge_vertex(m, lo->p, dir, lo->lab, hi->lab);
 }
 
 /* Marching tetrahedra on one tetrahedron: one triangle when one corner differs from the
@@ -225,13 +223,14 @@ static int march_cube(marcher *m, const uint64_t p[3])
 {
     static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
                                    {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-    int lab[8], any_in = 0, any_out = 0;
+    uint32_t lab[8];
+    int any_in = 0, any_out = 0;
     for (int b = 0; b < 8; b++) {
         uint64_t q[3] = {p[0] + (b & 1), p[1] + (b >> 1 & 1), p[2] + (b >> 2 & 1)};
         lab[b] = label(m, q);
-        if (lab[b] < 0) return -1;
-        any_in |= lab[b];
-        any_out |= !lab[b];
+        if (lab[b] == UINT32_MAX) return -1;
+        any_in |= lab[b] & 1;
+        any_out |= !(lab[b] & 1);
     }
     if (!any_in || !any_out) return 0;
     for (int t = 0; t < 6; t++) {
@@ -243,7 +242,8 @@ static int march_cube(marcher *m, const uint64_t p[3])
                 c[i].local[k] = (double)(bits >> k & 1);
                 c[i].p[k] = p[k] + (bits >> k & 1);
             }
-            c[i].in = lab[bits];
+            c[i].lab = lab[bits];
+            c[i].in = lab[bits] & 1;
         }
         if (march_tet(m, c)) return -1;
     }
@@ -258,10 +258,13 @@ static int cmp_u64(const void *pa, const void *pb)
     return a < b ? -1 : a > b;
 }
 
-/* The cube range [lo, hi] of ball b's bounding box; its cube count. */
+/* Margin of the cube culling, in cells (cube_class). */
+#define CULL_MARGIN 1e-3
+
+/* The cube range [lo, hi] of ball b's bounding box grown by the culling margin; its cube count. */
 static double ball_cubes(const marcher *m, const double *b, uint64_t lo[3], uint64_t hi[3])
 {
-    double r = sqrt(b[3]), count = 1;
+    double r = sqrt(b[3]) + CULL_MARGIN * m->h, count = 1;
     for (int c = 0; c < 3; c++) {
         lo[c] = (uint64_t)floor((b[c] - r - m->origin[c]) / m->h);
         hi[c] = (uint64_t)floor((b[c] + r - m->origin[c]) / m->h);
@@ -270,14 +273,52 @@ static double ball_cubes(const marcher *m, const double *b, uint64_t lo[3], uint
     return count;
 }
 
+/* Which cubes the marcher needs (only cubes with an inside and an outside corner carry
+ * triangles; skipping any other cube drops nothing and keeps the triangulation conforming):
+ *  CUBE_FAR   the cube is farther than r + m from ball b's centre;
+ *  CUBE_DEEP  all of the cube is within sqrt(t) r - m of it, inside the shrunk ball b^t, where
+ *             G(y) <= |y - c|^2 - t w < 0: every corner is inside;
+ *  CUBE_NEAR  neither.
+ * A cube FAR from every positive ball lies outside their union, which contains body^t (§6.1),
+ * and at distance delta >= m from body^t G >= delta^2 > 0 (G = (d - r')(d + r') for the nearest
+ * shrunk ball of radius r' at distance d >= r' + delta): every corner is outside. The margin
+ * m (1e-3 cells) puts both signs far above G's rounding. The corner coordinates are computed as
+ * grid_point does, so the test sees the same points the labels do. */
+enum { CUBE_FAR, CUBE_NEAR, CUBE_DEEP };
+static int cube_class(const marcher *m, const double *b, double t, const uint64_t p[3])
+{
+    double near2 = 0, far2 = 0, mg = CULL_MARGIN * m->h, r = sqrt(b[3]);
+    for (int c = 0; c < 3; c++) {
+        double lo = m->origin[c] + m->h * (double)p[c] - b[c];
+        double hi = m->origin[c] + m->h * (double)(p[c] + 1) - b[c];
+        double nd = lo > 0 ? lo : hi < 0 ? -hi : 0, fd = fmax(fabs(lo), fabs(hi));
+        near2 += nd * nd;
+        far2 += fd * fd;
+    }
+    if (!(near2 <= (r + mg) * (r + mg))) return CUBE_FAR;
+    double rs = sqrt(t) * r - mg;
+    return rs > 0 && far2 < rs * rs ? CUBE_DEEP : CUBE_NEAR;
+}
+
 enum { BITMAP_MAX_BITS = 1 << 28 };
 
-/* collect_cubes through a bitmap of the box of all positive balls (when it has at most
- * BITMAP_MAX_BITS cubes): many overlapping balls (the eps-approximation's B*, 10^5 balls on a
- * torus) overcount their union by 100x, which the limit must not see. -1 when the box is too
- * large for the bitmap. */
-static int collect_bitmap(const marcher *m, const double *xyzw, size_t n, size_t max_cubes,
-                          fl_vec *cubes, fl_status *st, fl_error *err)
+static int bit_get(const uint8_t *bits, size_t id)
+{
+    return bits[id >> 3] >> (id & 7) & 1;
+}
+
+static void bit_set(uint8_t *bits, size_t id)
+{
+    bits[id >> 3] |= (uint8_t)(1u << (id & 7));
+}
+
+/* collect_cubes through two bitmaps of the box of all positive balls (when it has at most
+ * BITMAP_MAX_BITS cubes): near (some ball is not FAR) and deep (some ball is DEEP); the visited
+ * cubes are near and not deep. Many overlapping balls (the eps-approximation's B*, 10^5 balls
+ * on a torus) overcount their union by 100x, which the limit must not see. -1 when the box is
+ * too large for the bitmaps. */
+static int collect_bitmap(const marcher *m, const double *xyzw, size_t n, double t,
+                          size_t max_cubes, fl_vec *cubes, fl_status *st, fl_error *err)
 {
     uint64_t glo[3] = {UINT64_MAX, UINT64_MAX, UINT64_MAX}, ghi[3] = {0, 0, 0}, lo[3], hi[3];
     for (size_t i = 0; i < n; i++) {
@@ -296,21 +337,29 @@ static int collect_bitmap(const marcher *m, const double *xyzw, size_t n, size_t
         cells *= (double)d[c];
     }
     if (cells > BITMAP_MAX_BITS) return -1;
-    uint8_t *bits = calloc((size_t)cells / 8 + 1, 1);
-    if (!bits) return -1;
-    size_t unique = 0;
+    uint8_t *near = calloc((size_t)cells / 8 + 1, 1), *deep = calloc((size_t)cells / 8 + 1, 1);
+    if (!near || !deep) {
+        free(near);
+        free(deep);
+        return -1;
+    }
     for (size_t i = 0; i < n; i++) {
         if (!(xyzw[4 * i + 3] > 0)) continue;
         ball_cubes(m, xyzw + 4 * i, lo, hi);
-        for (uint64_t z = lo[2]; z <= hi[2]; z++)
-            for (uint64_t y = lo[1]; y <= hi[1]; y++)
-                for (uint64_t x = lo[0]; x <= hi[0]; x++) {
-                    size_t id =
-                        (size_t)(((z - glo[2]) * d[1] + (y - glo[1])) * d[0] + (x - glo[0]));
-                    unique += !(bits[id >> 3] & (1u << (id & 7)));
-                    bits[id >> 3] |= (uint8_t)(1u << (id & 7));
+        uint64_t p[3];
+        for (p[2] = lo[2]; p[2] <= hi[2]; p[2]++)
+            for (p[1] = lo[1]; p[1] <= hi[1]; p[1]++)
+                for (p[0] = lo[0]; p[0] <= hi[0]; p[0]++) {
+                    int cls = cube_class(m, xyzw + 4 * i, t, p);
+                    if (cls == CUBE_FAR) continue;
+                    size_t id = (size_t)(((p[2] - glo[2]) * d[1] + (p[1] - glo[1])) * d[0] +
+                                         (p[0] - glo[0]));
+                    bit_set(cls == CUBE_DEEP ? deep : near, id);
                 }
     }
+    size_t unique = 0, all = (size_t)cells;
+    for (size_t id = 0; id < all; id++)
+        unique += bit_get(near, id) && !bit_get(deep, id);
     *st = FL_OK;
     if (unique > max_cubes)
         *st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
@@ -318,30 +367,26 @@ static int collect_bitmap(const marcher *m, const double *xyzw, size_t n, size_t
                       "cell than %g",
                       unique, max_cubes, m->h);
     /* z-major scan: the keys come out sorted (pack puts z in the high bits) */
-    for (uint64_t z = 0; z < d[2] && !*st; z++)
-        for (uint64_t y = 0; y < d[1] && !*st; y++)
-            for (uint64_t x = 0; x < d[0]; x++) {
-                size_t id = (size_t)((z * d[1] + y) * d[0] + x);
-                if (!(bits[id >> 3] & (1u << (id & 7)))) continue;
-                uint64_t p[3] = {x + glo[0], y + glo[1], z + glo[2]};
-                uint64_t key = pack(p);
-                if (fl_vec_push(cubes, &key, 1)) {
-                    *st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
-                    break;
-                }
-            }
-    free(bits);
+    for (size_t id = 0; id < all && !*st; id++) {
+        if (!bit_get(near, id) || bit_get(deep, id)) continue;
+        uint64_t p[3] = {id % d[0] + glo[0], id / d[0] % d[1] + glo[1], id / d[0] / d[1] + glo[2]};
+        uint64_t key = pack(p);
+        if (fl_vec_push(cubes, &key, 1))
+            *st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    }
+    free(near);
+    free(deep);
     return 0;
 }
 
-/* The cubes meeting some positive ball's bounding box, sorted and unique (keys of their lowest
- * corner). Fails with FL_ERR_INPUT when they are more than max_cubes (without the bitmap: when
- * the boxes hold more than max_cubes cubes in total). */
-static fl_status collect_cubes(const marcher *m, const double *xyzw, size_t n, size_t max_cubes,
-                               fl_vec *cubes, fl_error *err)
+/* The cubes to visit, sorted and unique (keys of their lowest corner). Fails with FL_ERR_INPUT
+ * when they are more than max_cubes (without the bitmaps: when the balls' boxes hold more than
+ * max_cubes cubes in total; that path visits every cube some ball does not find FAR). */
+static fl_status collect_cubes(const marcher *m, const double *xyzw, size_t n, double t,
+                               size_t max_cubes, fl_vec *cubes, fl_error *err)
 {
     fl_status bst = FL_OK;
-    if (collect_bitmap(m, xyzw, n, max_cubes, cubes, &bst, err) == 0) return bst;
+    if (collect_bitmap(m, xyzw, n, t, max_cubes, cubes, &bst, err) == 0) return bst;
     for (int pass = 0; pass < 2; pass++) {
         double total = 0;
         for (size_t i = 0; i < n; i++) {
@@ -355,7 +400,7 @@ static fl_status collect_cubes(const marcher *m, const double *xyzw, size_t n, s
                 for (p[1] = lo[1]; p[1] <= hi[1]; p[1]++)
                     for (p[0] = lo[0]; p[0] <= hi[0]; p[0]++) {
                         uint64_t key = pack(p);
-                        if (fl_vec_push(cubes, &key, 1))
+                        if (cube_class(m, b, t, p) != CUBE_FAR && fl_vec_push(cubes, &key, 1))
                             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
                     }
         }
@@ -421,32 +466,36 @@ static fl_status setup_grid(marcher *m, const double *xyzw, size_t n, double t, 
     return FL_OK;
 }
 
-/* max over the vertices of |G(v)| / |grad G(v)| (central differences at step 1e-5 h). */
-static double vertex_offset(marcher *m, const double *x, size_t count, double h)
-{
-    double worst = 0, d = 1e-5 * h;
-    for (size_t i = 0; i < count; i++) {
-        const double *v = x + 3 * i;
-        double g2 = 0;
-        for (int c = 0; c < 3; c++) {
-            double a[3] = {v[0], v[1], v[2]}, b[3] = {v[0], v[1], v[2]};
-            a[c] += d;
-            b[c] -= d;
-            double gc = (eval(m, a) - eval(m, b)) / (2 * d);
-            g2 += gc * gc;
-        }
-        double off = fabs(eval(m, v)) / sqrt(g2);
-        if (!(off <= worst)) worst = off;
-    }
-    return worst;
-}
-
 static fl_status march_all(marcher *m, const fl_vec *cubes, const fl_skin_options *o, fl_error *err)
 {
     const uint64_t *k = cubes->data;
-    size_t est = cubes->count / 4 + 64;
-    if (map_init(&m->label, est) || map_init(&m->vert, est))
+    uint64_t hi[2] = {0, 0};
+    m->xlo = m->ylo = AXIS_MAX;
+    for (size_t i = 0; i < cubes->count; i++) {
+        uint64_t x = k[i] & (AXIS_MAX - 1), y = k[i] >> AXIS_BITS & (AXIS_MAX - 1);
+        m->xlo = x < m->xlo ? x : m->xlo;
+        m->ylo = y < m->ylo ? y : m->ylo;
+        hi[0] = x > hi[0] ? x : hi[0];
+        hi[1] = y > hi[1] ? y : hi[1];
+    }
+    /* the output's usual size (about 0.65 vertices and 1.3 triangles a visited cube): growing
+     * the vectors copies them and faults their pages in again */
+    if (fl_vec_reserve(&m->xyz, cubes->count / 3 * 2 + 64) ||
+        fl_vec_reserve(&m->tri, cubes->count / 3 * 4 + 64))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    m->dx = cubes->count ? (size_t)(hi[0] - m->xlo + 2) : 0; /* corners: one more than cubes */
+    m->dy = cubes->count ? (size_t)(hi[1] - m->ylo + 2) : 0;
+    if (m->dx && m->dx * m->dy <= SLAB_MAX_POINTS) {
+        m->slab = fl_alloc_array(2 * m->dx * m->dy, sizeof(slab_point));
+        if (!m->slab) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+        memset(m->slab, 0xff, 2 * m->dx * m->dy * sizeof(slab_point));
+    } else {
+        /* sized for the usual counts (about 1.3 grid points and 0.65 vertices a visited
+         * cube), so the maps seldom grow */
+        size_t est = cubes->count + cubes->count / 2 + 64;
+        if (map_init(&m->label, est) || map_init(&m->vert, est / 2))
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    }
     for (size_t i = 0; i < cubes->count; i++) {
         if ((i & 4095) == 0 &&
             fl_progress(o->progress, o->progress_user, "skin", (double)i / (double)cubes->count))
@@ -486,12 +535,9 @@ static fl_status graded(const double *xyzw, size_t n, const fl_skin_options *o, 
                      gs.cell);
     }
     if (!st && stats) {
-        marcher m;
-        memset(&m, 0, sizeof m);
-        m.g = g;
         *stats = gs;
-        stats->max_vertex_offset = vertex_offset(&m, out->xyz, out->vertex_count, gs.cell);
-        stats->evaluations += m.evaluations;
+        stats->max_vertex_offset = skin_vertex_offset(g, out->xyz, out->vertex_count, gs.cell,
+                                                      &stats->evaluations);
     }
     fl_skin_function_free(g);
     if (st) memset(out, 0, sizeof *out);
@@ -532,7 +578,7 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
                              "skin: grid spacing %g is below the resolution of coordinate %g "
                              "(a ball too small for its position)",
                              m.h, xyzw[4 * i + c]);
-    if (!st) st = collect_cubes(&m, xyzw, n, o.max_cubes, &cubes, err);
+    if (!st) st = collect_cubes(&m, xyzw, n, o.t, o.max_cubes, &cubes, err);
     if (!st) st = march_all(&m, &cubes, &o, err);
     if (!st && m.tri.count == 0)
         st = fl_fail(err, FL_ERR_INPUT, NULL, -1,
@@ -540,20 +586,17 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
     if (!st && stats) {
         stats->cell = m.h;
         stats->cubes = cubes.count;
-        stats->max_vertex_offset = vertex_offset(&m, m.xyz.data, m.xyz.count, m.h);
         stats->evaluations = m.evaluations;
+        stats->max_vertex_offset =
+            skin_vertex_offset(g, m.xyz.data, m.xyz.count, m.h, &stats->evaluations);
     }
-    if (!st) {
-        out->vertex_count = m.xyz.count;
-        out->triangle_count = m.tri.count;
-        out->xyz = fl_vec_release(&m.xyz);
-        out->tri = fl_vec_release(&m.tri);
-    }
+    if (!st) skin_hand_over(&m.xyz, &m.tri, out);
     fl_vec_free(&m.xyz);
     fl_vec_free(&m.tri);
     fl_vec_free(&cubes);
     map_free(&m.label);
     map_free(&m.vert);
+    free(m.slab);
     fl_skin_function_free(g);
     return st;
 }

@@ -1,0 +1,225 @@
+/* Mesh vertices on the skin: the zero of G on a grid edge, the distance estimate of the
+ * vertices to the skin, and handing the mesh over; shared by the uniform mesher (skin_mesh.c)
+ * and the graded one (skin_graded.c).
+ *
+ * Why a closed form is exact here: on the mixed cell mu_X = (1-t) X + t nu_X the skin function
+ * is X's quadric G = |q|^2 - t/(1-t) |p|^2 + t w_X, with x - f = p + q split parallel and
+ * orthogonal to aff X (docs/skin.md, "The skin function"). p and q are affine in x, so along a
+ * segment x = a + s d inside mu_X, G is a quadratic polynomial in s. mu_X is convex (a Minkowski
+ * sum of two convex polytopes), so a segment whose two ends lie in mu_X lies in it, and the
+ * zero of G on it is a root of that polynomial: no evaluation of G is needed. */
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "skin/skin_internal.h"
+
+/* The coefficients of G(a + s d) = c[0] s^2 + c[1] s + c[2] on the mixed cell of simplex id. */
+static void quadric_line(const fl_skin_function *sk, uint32_t id, const double a[3],
+                         const double d[3], double c[3])
+{
+    const skin_simplex *s = &sk->simplex[id];
+    double kappa = sk->t / (1 - sk->t), r[3], ea[3], ed[3], xa[3] = {0, 0, 0}, xd[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+        r[k] = a[k] - s->a[k];
+    for (int i = 0; i < s->k; i++) {
+        ea[i] = s->e[i][0] * r[0] + s->e[i][1] * r[1] + s->e[i][2] * r[2];
+        ed[i] = s->e[i][0] * d[0] + s->e[i][1] * d[1] + s->e[i][2] * d[2];
+    }
+    for (int i = 0; i < s->k; i++)
+        for (int j = 0; j < s->k; j++) {
+            xa[i] += s->ginv[i][j] * ea[j];
+            xd[i] += s->ginv[i][j] * ed[j];
+        }
+    double p0[3], pd[3], q0[3], qd[3];
+    for (int k = 0; k < 3; k++) {
+        double ra = 0, rd = 0; /* the projections onto aff X, relative to its first centre */
+        for (int i = 0; i < s->k; i++) {
+            ra += xa[i] * s->e[i][k];
+            rd += xd[i] * s->e[i][k];
+        }
+        p0[k] = s->a[k] + ra - s->f[k];
+        pd[k] = rd;
+        q0[k] = r[k] - ra;
+        qd[k] = d[k] - rd;
+    }
+    double qq = 0, qq0 = 0, q00 = 0, pp = 0, pp0 = 0, p00 = 0;
+    for (int k = 0; k < 3; k++) {
+        qq += qd[k] * qd[k];
+        qq0 += q0[k] * qd[k];
+        q00 += q0[k] * q0[k];
+        pp += pd[k] * pd[k];
+        pp0 += p0[k] * pd[k];
+        p00 += p0[k] * p0[k];
+    }
+    c[0] = qq - kappa * pp;
+    c[1] = 2 * (qq0 - kappa * pp0);
+    c[2] = q00 - kappa * p00 + sk->t * s->w;
+}
+
+static double poly(const double c[3], double s)
+{
+    return (c[0] * s + c[1]) * s + c[2];
+}
+
+/* The root of c[0] s^2 + c[1] s + c[2] in [lo, hi], whose ends have values of opposite signs in
+ * exact arithmetic: the closed form (the cancellation-free pair of formulas), checked
+ * against the bracket, then Newton steps kept inside it; bisection on the polynomial when
+ * rounding put both closed-form roots outside. */
+static double quadratic_root(const double c[3], double lo, double hi)
+{
+    double plo = poly(c, lo), phi = poly(c, hi), s = 0.5 * (lo + hi);
+    /* no sign change: rounding (an end located in this cell within the walk's slack, G there
+     * a few ulps from 0); the root is at the end nearer to zero */
+    if ((plo > 0) == (phi > 0) || (plo < 0) == (phi < 0)) return fabs(plo) <= fabs(phi) ? lo : hi;
+    int up = plo < 0; /* the polynomial rises from lo to hi */
+    double disc = c[1] * c[1] - 4 * c[0] * c[2];
+    disc = disc > 0 ? sqrt(disc) : 0;
+    double qr = -0.5 * (c[1] + (c[1] < 0 ? -disc : disc));
+    double r1 = c[0] != 0 ? qr / c[0] : HUGE_VAL, r2 = qr != 0 ? c[2] / qr : HUGE_VAL;
+    double pad = 1e-9 * (hi - lo);
+    if (r1 >= lo - pad && r1 <= hi + pad)
+        s = r1;
+    else if (r2 >= lo - pad && r2 <= hi + pad)
+        s = r2;
+    else { /* rounding: bisect the polynomial */
+        double a = lo, b = hi;
+        for (int it = 0; it < 200 && b - a > 4 * DBL_EPSILON * (fabs(a) + fabs(b)); it++) {
+            double m = 0.5 * (a + b);
+            if ((poly(c, m) < 0) == up)
+                a = m;
+            else
+                b = m;
+        }
+        return 0.5 * (a + b);
+    }
+    s = fmin(hi, fmax(lo, s));
+    for (int it = 0; it < 2; it++) { /* polish: the closed form loses digits when c[0] ~ 0 */
+        double der = 2 * c[0] * s + c[1];
+        if (!(der != 0)) break;
+        double ns = s - poly(c, s) / der;
+        if (!(ns >= lo && ns <= hi) || !(fabs(poly(c, ns)) < fabs(poly(c, s)))) break;
+        s = ns;
+    }
+    return s;
+}
+
+static void at(const double a[3], const double d[3], double s, double x[3])
+{
+    for (int k = 0; k < 3; k++)
+        x[k] = a[k] + s * d[k];
+}
+
+/* Regula falsi (Illinois) with a bisection step whenever a step shrinks the bracket by less
+ * than half, until the bracket no longer shrinks, or until its two ends lie in one mixed cell
+ * (then the closed form finishes). The end with the smaller |G| is the answer. */
+void skin_edge_root(const fl_skin_function *g, const double a[3], const double b[3], uint32_t ca,
+                    uint32_t cb, uint32_t *hint, double x[3], size_t *evaluations)
+{
+    uint32_t own = hint ? *hint : 0, *h = hint ? hint : &own;
+    double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, coef[3];
+    if (ca != SKIN_NO_CELL && ca == cb) {
+        quadric_line(g, ca, a, d, coef);
+        at(a, d, quadratic_root(coef, 0, 1), x);
+        return;
+    }
+    /* parameter s in [lo, hi] along a -> b; G(lo) < 0 <= G(hi) */
+    double lo = 0, hi = 1, glo, ghi;
+    uint32_t clo = skin_locate(g, a, h, &glo), chi = skin_locate(g, b, h, &ghi);
+    size_t ev = 2;
+    int side = 0;
+    for (int it = 0; it < 200 && glo < 0 && ghi > 0; it++) {
+        if (clo != SKIN_NO_CELL && clo == chi) {
+            quadric_line(g, clo, a, d, coef);
+            at(a, d, quadratic_root(coef, lo, hi), x);
+            *evaluations += ev;
+            return;
+        }
+        double width = hi - lo;
+        double s_new = lo + (hi - lo) * (-glo / (ghi - glo));
+        if (!(s_new > lo && s_new < hi)) s_new = 0.5 * (lo + hi);
+        at(a, d, s_new, x);
+        double gx;
+        uint32_t cx = skin_locate(g, x, h, &gx);
+        ev++;
+        if (gx < 0) {
+            lo = s_new, glo = gx, clo = cx;
+            if (side == -1) ghi *= 0.5; /* Illinois: the stale end would stall regula falsi */
+            side = -1;
+        } else {
+            hi = s_new, ghi = gx, chi = cx;
+            if (side == 1) glo *= 0.5;
+            side = 1;
+        }
+        if (hi - lo > 0.5 * width) { /* slow step: bisect once */
+            double mid = 0.5 * (lo + hi), gm;
+            if (mid <= lo || mid >= hi) break;
+            at(a, d, mid, x);
+            uint32_t cm = skin_locate(g, x, h, &gm);
+            ev++;
+            if (gm < 0)
+                lo = mid, glo = gm, clo = cm;
+            else
+                hi = mid, ghi = gm, chi = cm;
+            side = 0;
+        }
+        if (!(hi - lo > 4 * DBL_EPSILON)) break;
+    }
+    /* the end with the smaller |G| (the halved Illinois values are not G: re-evaluate) */
+    double xl[3], xh[3], gl, gh;
+    at(a, d, lo, xl);
+    at(a, d, hi, xh);
+    skin_locate(g, xl, h, &gl);
+    skin_locate(g, xh, h, &gh);
+    *evaluations += ev + 2;
+    memcpy(x, fabs(gl) <= fabs(gh) ? xl : xh, sizeof(xl));
+}
+
+/* |G(v)| / |grad G(v)| at one point: the gradient of the cell's quadric, 2 q - 2 t/(1-t) p. */
+static double offset_at(const fl_skin_function *g, const double *v, double h, uint32_t *hint,
+                        size_t *ev)
+{
+    double val, grad[3];
+    uint32_t c = skin_locate(g, v, hint, &val);
+    ++*ev;
+    if (c != SKIN_NO_CELL) {
+        for (int k = 0; k < 3; k++) { /* d/ds of the quadric along each axis at s = 0 */
+            double e[3] = {0, 0, 0}, coef[3];
+            e[k] = 1;
+            quadric_line(g, c, v, e, coef);
+            grad[k] = coef[1];
+        }
+    } else {
+        double d = 1e-5 * h;
+        for (int k = 0; k < 3; k++) {
+            double a[3] = {v[0], v[1], v[2]}, b[3] = {v[0], v[1], v[2]}, ga, gb;
+            a[k] += d;
+            b[k] -= d;
+            skin_locate(g, a, hint, &ga);
+            skin_locate(g, b, hint, &gb);
+            grad[k] = (ga - gb) / (2 * d);
+        }
+        *ev += 6;
+    }
+    return fabs(val) / sqrt(grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2]);
+}
+
+double skin_vertex_offset(const fl_skin_function *g, const double *xyz, size_t count, double h,
+                          size_t *evaluations)
+{
+    double worst = 0;
+    uint32_t hint = 0;
+    for (size_t i = 0; i < count; i++) {
+        double off = offset_at(g, xyz + 3 * i, h, &hint, evaluations);
+        if (!(off <= worst)) worst = off;
+    }
+    return worst;
+}
+
+void skin_hand_over(fl_vec *xyz, fl_vec *tri, fl_mesh *out)
+{
+    out->vertex_count = xyz->count;
+    out->triangle_count = tri->count;
+    out->xyz = fl_vec_release(xyz);
+    out->tri = fl_vec_release(tri);
+}

@@ -1770,15 +1770,18 @@ typedef struct fl_skin_options {
 /* What fl_skin_mesh measured (optional). */
 typedef struct fl_skin_stats {
     double cell;              /* grid spacing used */
-    size_t cubes;             /* grid cubes inside the balls' bounding boxes that were visited */
-    size_t evaluations;       /* evaluations of G (grid points and bisection steps) */
+    size_t cubes;             /* grid cubes visited (within the balls' bounding boxes; cubes
+                                 provably all inside or all outside the skin are skipped) */
+    size_t evaluations;       /* evaluations of G (grid points and root-finding steps; vertices
+                                 solved in closed form inside one mixed cell need none) */
     double max_vertex_offset; /* largest |G(v)| / |grad G(v)| over the vertices: a first-order
                                  estimate of their distance to the skin */
 } fl_skin_stats;
 
 /* Triangulates skin^t(B) of the n balls xyzw[4n]: marching tetrahedra on the Kuhn
  * subdivision of a cubic grid restricted to the balls' bounding boxes, with every vertex placed
- * on the skin by bisection of G along its grid edge to the last bit. The result is a closed,
+ * on the skin along its grid edge: in closed form where the edge lies in one mixed cell (G is
+ * one quadric there), else by safeguarded regula falsi to the last bit. The result is a closed,
  * oriented (outward, counter-clockwise) 2-manifold triangle mesh for every input; it has the
  * topology of the skin when the grid resolves its features (necks thinner than the cell can
  * be missed; docs/skin.md). stats may be NULL. Errors as fl_skin_function_new, plus

@@ -1493,9 +1493,12 @@ typedef enum fl_g1_scheme {
                             * derives and measures both); kept for comparison, not for use */
     FL_G1_AUTO = 5 /* per connected component of the mesh: the three-split where it measures
                     * G1 (max normal jump < 1e-7 degrees at 33 points of every patch edge, no
-                    * fold), else the six-split, else whichever of the two measures better;
-                    * six_split_triangles says how many triangles took the six-split. The
-                    * two schemes do not meet across one edge (docs/smooth.md, "Auto") */
+                    * fold, normals interpolated), else the six-split; if neither is G1 with
+                    * the requested normal weighting, both again with the other two
+                    * weightings (surface->normal holds the normals used); else the best
+                    * measured. six_split_triangles says how many triangles took the
+                    * six-split. The two schemes never meet across an edge (docs/smooth.md,
+                    * "Auto") */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */

@@ -7,6 +7,7 @@
  *   smooth_osc MESH three-split|six-split|pn|auto [SAMPLES]
  * prints one line "RESULT key=value ...". CPU seconds are the build alone. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -51,9 +52,12 @@ static void blossom(const double *ctrl, const double u[3][3], double out[3])
     memcpy(out, a[0], 3 * sizeof(double));
 }
 
-/* Domain position (barycentric in macro triangle t) of corner c of patch p. */
-static int corner_domain(const fl_mesh *m, const fl_g1_surface *s, size_t p, int c, int six,
-                         double bc[3])
+/* Domain position (barycentric in macro triangle t) of corner c of patch p. Three-split
+ * patches are (V_i, V_i+1, O), six-split ones (V_i, m_i, O) and (m_i, V_i+1, O), the six of a
+ * triangle from first[t] on (auto renumbers the split nodes of each component, so corners are
+ * recognised by position, not by node id). */
+static void corner_domain(const fl_mesh *m, const fl_g1_surface *s, const size_t *first, size_t p,
+                          int c, double bc[3])
 {
     uint32_t n = s->corner[3 * p + c], t = s->macro[p];
     const uint32_t *tri = m->tri + 3 * (size_t)t;
@@ -61,17 +65,15 @@ static int corner_domain(const fl_mesh *m, const fl_g1_surface *s, size_t p, int
     for (int k = 0; k < 3; k++)
         if (tri[k] == n) {
             bc[k] = 1;
-            return 0;
+            return;
         }
-    if (n == m->vertex_count + t) {
+    if (c == 2) {
         bc[0] = bc[1] = bc[2] = 1.0 / 3;
-        return 0;
+        return;
     }
-    if (!six) return -1;
-    /* six-split: patches 6t + 2i, 6t + 2i + 1 share the split point of edge i at lam from
-     * v_i; lam from the layout Y_B - m = -rho (Y_A - m) (docs/smooth.md, split ratio) */
-    size_t p0 = p - (p - 6 * (size_t)t) % 2;
-    int i = (int)((p0 - 6 * (size_t)t) / 2);
+    /* six-split split point of edge i at lam from v_i; lam from the layout
+     * Y_B - m = -rho (Y_A - m) (docs/smooth.md, split ratio) */
+    size_t i = (p - first[t]) / 2, p0 = first[t] + 2 * i;
     const double *mm = s->ctrl + 30 * p0 + 3 * ix(0, 3), *ya = s->ctrl + 30 * p0 + 3 * ix(1, 2),
                  *yb = s->ctrl + 30 * (p0 + 1) + 3 * ix(2, 1);
     double aa = 0, ab = 0;
@@ -82,7 +84,6 @@ static int corner_domain(const fl_mesh *m, const fl_g1_surface *s, size_t p, int
     double rho = -ab / aa, lam = 1 / (1 + rho);
     bc[i] = 1 - lam;
     bc[(i + 1) % 3] = lam;
-    return 0;
 }
 
 int main(int argc, char **argv)
@@ -123,15 +124,15 @@ int main(int argc, char **argv)
                         (a[2] - b[2]) * (a[2] - b[2]));
     }
     double mean_len = sum_len / (3.0 * (double)m.triangle_count);
-    size_t npts = 0;
+    size_t npts = 0, *first = malloc(m.triangle_count * sizeof *first);
+    for (size_t t = 0; t < m.triangle_count; t++)
+        first[t] = SIZE_MAX;
+    for (size_t p = s.patch_count; p-- > 0;)
+        first[s.macro[p]] = p;
     for (size_t p = 0; p < s.patch_count; p++) {
         double dom[3][3];
-        int six = (s.patch_count == 6 * m.triangle_count);
         for (int c = 0; c < 3; c++)
-            if (corner_domain(&m, &s, p, c, six, dom[c])) {
-                fprintf(stderr, "smooth_osc: unknown patch layout\n");
-                return 1;
-            }
+            corner_domain(&m, &s, first, p, c, dom[c]);
         const double *macro = pn.ctrl + 30 * (size_t)s.macro[p];
         for (int i = 0; i <= 3; i++)
             for (int j = 0; i + j <= 3; j++) {
@@ -160,6 +161,7 @@ int main(int argc, char **argv)
            mt.max_edge_normal_jump_deg, mt.orientation_flips, mt.max_deviation, dmax,
            dsum / (double)npts, s.orientation_repairs, s.orientation_failures,
            mt.max_normal_error);
+    free(first);
     fl_g1_surface_free(&s);
     fl_g1_surface_free(&pn);
     fl_mesh_free(&m);

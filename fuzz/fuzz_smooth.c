@@ -119,8 +119,6 @@ static void sm_surface(fz_in *in, uint8_t head)
      * six-split or the two-split instead of the three-split / PN patches. */
     int scheme = (head >> 3) & 1;
     if (head & 2) scheme = scheme ? FL_G1_TWO_SPLIT : FL_G1_SIX_SPLIT;
-    /* round 7: bits 1, 3 and 7 together pick auto (per component three- or six-split) */
-    if ((head & 2) && (head & 8) && (head & 128)) scheme = FL_G1_AUTO;
     fl_g1_surface_options o = {scheme, (head >> 4) & 3, (head & 64) ? 0.4 : 0};
     fl_g1_surface s;
     fl_error err;
@@ -144,9 +142,7 @@ static void sm_surface(fz_in *in, uint8_t head)
     /* Patches: one (PN), three or six a triangle; a two-split pair has four for its two. */
     size_t want = o.scheme == FL_G1_MACRO       ? nt
                   : o.scheme == FL_G1_SIX_SPLIT ? 6 * nt
-                  : o.scheme == FL_G1_AUTO      ? 3 * nt + 3 * s.six_split_triangles
                                                 : 3 * nt - 2 * s.two_split_pairs;
-    FZ_ASSERT(s.six_split_triangles <= nt, "%zu six-split triangles", s.six_split_triangles);
     FZ_ASSERT(2 * s.two_split_pairs <= nt, "%zu pairs of %zu triangles", s.two_split_pairs, nt);
     FZ_ASSERT(s.patch_count == want, "patch count %zu, expected %zu", s.patch_count, want);
     for (size_t i = 0; i < nv; i++) {

@@ -1486,11 +1486,19 @@ typedef enum fl_g1_scheme {
                             * C1 cross split of its quad (four cubic micro patches), its inner
                             * points solved with the neighbours' by eq. 9.4 as on a three-split
                             * edge: G1 where the three-split is (docs/smooth.md) */
-    FL_G1_TWO_SPLIT_AS_PRINTED = 4 /* §9.7 exactly as printed (split at P(1/2,1/2,0), eq. 9.6
+    FL_G1_TWO_SPLIT_AS_PRINTED = 4, /* §9.7 exactly as printed (split at P(1/2,1/2,0), eq. 9.6
                             * least-displacement solve, eq. 9.7 on the neighbours' edges): NOT
                             * G1, eq. 9.6 forces a degenerate corner at every split point and
                             * eq. 9.7 leaves the far end of the outer edges open (docs/smooth.md
                             * derives and measures both); kept for comparison, not for use */
+    FL_G1_AUTO = 5 /* per connected component of the mesh: the three-split where it measures
+                    * G1 (max normal jump < 1e-7 degrees at 33 points of every patch edge, no
+                    * fold, normals interpolated), else the six-split; if neither is G1 with
+                    * the requested normal weighting, both again with the other two
+                    * weightings (surface->normal holds the normals used); else the best
+                    * measured. six_split_triangles says how many triangles took the
+                    * six-split. The two schemes never meet across an edge (docs/smooth.md,
+                    * "Auto") */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */
@@ -1532,6 +1540,9 @@ typedef struct fl_g1_surface {
                                  * quadratic because eq. 9.4 was (nearly) dependent with the
                                  * thesis's cubic curve (docs/smooth.md) */
     size_t two_split_pairs;     /* two-split: pairs of macro triangles split in two */
+    size_t six_split_triangles; /* auto: mesh triangles built with the six-split (the rest
+                                 * took the three-split); with auto, the non-vertex nodes of
+                                 * each connected component follow those of the previous ones */
 } fl_g1_surface;
 
 /* Builds the surface over a closed, manifold, oriented mesh with coordinates |x| <= 1e150
@@ -1565,8 +1576,9 @@ typedef struct fl_g1_metrics {
                                       * divided by the mean edge length */
 } fl_g1_metrics;
 
-/* Measures `surface` built from `mesh` with `samples` (>= 2) points an edge and a grid of the
- * same density inside each patch for the deviation. FL_ERR_USAGE, FL_ERR_NOMEM. */
+/* Measures `surface` built from `mesh` with `samples` (>= 2) segments along every patch edge
+ * (samples + 1 points) and a grid of min(samples, 8) segments an edge inside each patch for
+ * the deviation. FL_ERR_USAGE, FL_ERR_NOMEM. */
 fl_status fl_g1_surface_measure(const fl_g1_surface *surface, const fl_mesh *mesh,
                                 unsigned samples, fl_g1_metrics *out, fl_error *err);
 

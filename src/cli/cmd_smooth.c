@@ -19,11 +19,13 @@ static const char *usage_text =
     "POLYGON (.xy .geojson .json): closed cubic Bézier curves (§9.2); -o .svg writes the\n"
     "Bézier paths, -o .xy the curve sampled N points a segment (--samples, default 16).\n"
     "MESH (.off .obj .ply .stl, closed, manifold, oriented): cubic Bézier triangles\n"
-    "interpolating the vertices and estimated normals (§9.4). Schemes: three-split (§9.6,\n"
-    "G1; auto is the same), six-split (§9.8, G1 on every mesh tested, smaller deviation\n"
-    "on rough meshes, wigglier reflection lines on smooth ones), pn (the macro patches of\n"
-    "steps 1-3 = PN triangles, only C0), two-split (§9.7: pairs of thin triangles split\n"
-    "in two at their common edge as one C1 cross split, the rest three-split; G1).\n"
+    "interpolating the vertices and estimated normals (§9.4). Schemes: auto (default: per\n"
+    "connected component the three-split where it measures G1, else the six-split),\n"
+    "three-split (§9.6, G1 on most meshes, smooth reflection lines), six-split (§9.8, G1\n"
+    "on every mesh tested, smaller deviation on rough meshes, wigglier reflection lines on\n"
+    "smooth ones), pn (the macro patches of steps 1-3 = PN triangles, only C0), two-split\n"
+    "(§9.7: pairs of thin triangles split in two at their common edge as one C1 cross\n"
+    "split, the rest three-split; G1).\n"
     "\n"
     "  --tangents W   curve tangent weighting (default length, §9.2 method 1)\n"
     "  --normals W    surface normal weighting (default area, §9.4 method 1)\n"
@@ -35,7 +37,7 @@ static const char *usage_text =
     "  --json         mesh: patches, max_vertex_error, max_normal_error,\n"
     "                 max_edge_normal_jump_deg, orientation_repairs, orientation_flips,\n"
     "                 max_deviation (relative to the mean edge length), quadratic_edges,\n"
-    "                 two_split_pairs,\n"
+    "                 two_split_pairs, singular_edges, six_split_triangles,\n"
     "                 seconds; polygon: segments, orientation_repairs, max_tangent_jump_deg,\n"
     "                 seconds\n"
     "\n"
@@ -212,6 +214,7 @@ static void print_surface(const cli_common *c, const fl_g1_surface *s, const fl_
         cli_json_uint(&j, "quadratic_edges", s->quadratic_edges);
         cli_json_uint(&j, "two_split_pairs", s->two_split_pairs);
         cli_json_uint(&j, "singular_edges", s->singular_edges);
+        cli_json_uint(&j, "six_split_triangles", s->six_split_triangles);
         cli_json_double(&j, "seconds", seconds);
         cli_json_end(&j);
     } else if (!c->quiet) {
@@ -233,9 +236,10 @@ static int run_surface(const cli_common *c, const smooth_args *a)
     fl_g1_metrics metrics;
     fl_status st = fl_read_mesh(a->input, &m, &err);
     if (st) return cli_report(&err);
-    /* auto = three-split: the six-split is G1 on every mesh tested, but its reflection lines
-     * wiggle where the three-split's are smooth (sphere.off, icospheres; docs/smooth.md) */
-    int scheme = FL_G1_THREE_SPLIT;
+    /* auto (the default): the three-split where it measures G1, else the six-split, per
+     * connected component (docs/smooth.md, "Auto") */
+    int scheme = FL_G1_AUTO;
+    if (a->scheme && !strcmp(a->scheme, "three-split")) scheme = FL_G1_THREE_SPLIT;
     if (a->scheme && !strcmp(a->scheme, "pn")) scheme = FL_G1_MACRO;
     if (a->scheme && !strcmp(a->scheme, "six-split")) scheme = FL_G1_SIX_SPLIT;
     if (a->scheme && !strcmp(a->scheme, "two-split")) scheme = FL_G1_TWO_SPLIT;

@@ -75,8 +75,8 @@ static void compare_edge(const fl_g1_surface *sf, uint32_t pa, uint32_t pb, unsi
     m->orientation_flips += (size_t)flipped;
 }
 
-static fl_status measure_edges(const fl_g1_surface *sf, unsigned samples, fl_g1_metrics *m,
-                               fl_error *err)
+fl_status g1_measure_edges(const fl_g1_surface *sf, unsigned samples, fl_g1_metrics *m,
+                          fl_error *err)
 {
     size_t ne = 3 * sf->patch_count;
     patch_edge *pe = fl_alloc_array(ne, sizeof *pe);
@@ -96,7 +96,7 @@ static fl_status measure_edges(const fl_g1_surface *sf, unsigned samples, fl_g1_
     return FL_OK;
 }
 
-static void measure_vertices(const fl_g1_surface *sf, const fl_mesh *mesh, fl_g1_metrics *m)
+void g1_measure_vertices(const fl_g1_surface *sf, const fl_mesh *mesh, fl_g1_metrics *m)
 {
     for (size_t p = 0; p < sf->patch_count; p++)
         for (int c = 0; c < 3; c++) {
@@ -156,8 +156,11 @@ fl_status fl_g1_surface_measure(const fl_g1_surface *surface, const fl_mesh *mes
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "NULL argument, fewer than 2 samples, or a mesh that is not the one the "
                        "surface was built from");
-    measure_vertices(surface, mesh, out);
-    fl_status st = measure_edges(surface, samples, out, err);
-    if (!st) st = measure_deviation(surface, mesh, samples, out, err);
+    g1_measure_vertices(surface, mesh, out);
+    fl_status st = g1_measure_edges(surface, samples, out, err);
+    /* The deviation grid stops at 8 segments a patch edge: it costs samples^2 / 2 closest
+     * points a patch, while only the edge jumps need dense sampling (a jump can sit between
+     * samples; the distance of a cubic patch from the mesh varies slowly inside it). */
+    if (!st) st = measure_deviation(surface, mesh, samples < 8 ? samples : 8, out, err);
     return st;
 }

@@ -130,4 +130,22 @@ size_t g1_emit_cross_split(const fl_mesh *m, const uint32_t *opp, uint32_t h,
 fl_status g1_six_split(const fl_mesh *m, const double *normals, double tension, fl_g1_surface *s,
                        fl_error *err);
 
+/* fl_g1_surface_build after the mesh check (surface.c); o->scheme may be FL_G1_AUTO. */
+fl_status g1_build_checked(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_surface *s,
+                          fl_error *err);
+
+/* FL_G1_AUTO (auto_scheme.c): per connected component the three-split where it measures G1,
+ * else the six-split (whichever measures better when neither does). */
+fl_status g1_auto_build(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_surface *s,
+                        fl_error *err);
+
+/* The edge part of fl_g1_surface_measure (measure.c): max normal jump and folds along every
+ * shared patch edge at samples + 1 points; adds to m. */
+fl_status g1_measure_edges(const fl_g1_surface *sf, unsigned samples, fl_g1_metrics *m,
+                          fl_error *err);
+
+/* The vertex part of fl_g1_surface_measure (measure.c): interpolation errors at the corners
+ * that are mesh vertices; max'ed into m. */
+void g1_measure_vertices(const fl_g1_surface *sf, const fl_mesh *mesh, fl_g1_metrics *m);
+
 #endif /* FL_SMOOTH_INTERNAL_H */

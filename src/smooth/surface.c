@@ -375,9 +375,10 @@ static fl_status allocate(fl_g1_surface *s, size_t patches, size_t nv)
     return s->ctrl && s->corner && s->macro && s->normal ? FL_OK : FL_ERR_NOMEM;
 }
 
-static fl_status build(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_surface *s,
-                       fl_error *err)
+fl_status g1_build_checked(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_surface *s,
+                          fl_error *err)
 {
+    if (o->scheme == FL_G1_AUTO) return g1_auto_build(m, o, s, err);
     size_t nt = m->triangle_count, nv = m->vertex_count;
     int two = o->scheme == FL_G1_TWO_SPLIT_AS_PRINTED, six = o->scheme == FL_G1_SIX_SPLIT;
     int cross = o->scheme == FL_G1_TWO_SPLIT;
@@ -444,12 +445,12 @@ fl_status fl_g1_surface_build(const fl_mesh *mesh, const fl_g1_surface_options *
     if (out) memset(out, 0, sizeof *out);
     if (!mesh || !out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "NULL argument");
     fl_g1_surface_options o = opt ? *opt : (fl_g1_surface_options){0};
-    if (o.scheme < 0 || o.scheme > FL_G1_TWO_SPLIT_AS_PRINTED || o.weighting < 0 ||
+    if (o.scheme < 0 || o.scheme > FL_G1_AUTO || o.weighting < 0 ||
         o.weighting > FL_G1_WEIGHT_INVERSE || !(o.tension >= 0) || o.tension >= 1)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "bad surface options (scheme, weighting, tension in [0, 1))");
     fl_status st = g1_require_closed_mesh(mesh, err);
-    if (!st) st = build(mesh, &o, out, err);
+    if (!st) st = g1_build_checked(mesh, &o, out, err);
     if (st) fl_g1_surface_free(out);
     return st;
 }

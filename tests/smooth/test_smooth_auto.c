@@ -1,0 +1,143 @@
+/* FL_G1_AUTO (docs/smooth.md, "Auto"): per connected component the three-split where it
+ * measures G1, else the six-split. Checked on meshes built here where the three-split alone
+ * is NOT G1 (the meshed cube: vertices on cube edges see their stars almost edge-on and some
+ * dependent cubic edges stay inconsistent), with the independent oracle of g1_oracle.h. */
+#include "g1_meshes.h"
+#include "g1_oracle.h"
+
+static fl_g1_surface build(const fl_mesh *m, int scheme)
+{
+    fl_g1_surface s;
+    fl_error err;
+    fl_g1_surface_options o = {.scheme = scheme};
+    CHECK_STATUS(fl_g1_surface_build(m, &o, &s, &err), FL_OK, &err);
+    return s;
+}
+
+/* Every patch corner at a mesh vertex is the vertex with the surface's normal (1e-12), and the
+ * surface's normals are unit vectors; returns how many corners were checked. */
+static size_t check_interpolation(const fl_mesh *m, const fl_g1_surface *s)
+{
+    double verr = 0, nerr = 0;
+    size_t hits = 0;
+    for (size_t p = 0; p < s->patch_count; p++)
+        for (int c = 0; c < 3; c++) {
+            uint32_t v = s->corner[3 * p + c];
+            if (v >= m->vertex_count) continue;
+            double pt[3], nn[3];
+            fl_g1_patch_eval(s->ctrl + 30 * p, c == 0, c == 1, c == 2, pt, nn);
+            for (int d = 0; d < 3; d++) {
+                verr = fmax(verr, fabs(pt[d] - m->xyz[3 * v + d]));
+                nerr = fmax(nerr, fabs(nn[d] - s->normal[3 * v + d]));
+            }
+            hits++;
+        }
+    CHECK_MSG(verr <= 1e-12 && nerr <= 1e-12, "vertex error %g, normal error %g", verr, nerr);
+    return hits;
+}
+
+/* The meshed cube (2 x 2 and 3 x 3 squares a face): the three-split alone has normal jumps of
+ * degrees there; auto is G1 to < 1e-7 degrees at 41 points of every micro and macro edge,
+ * without folds, and interpolates vertices and normals. */
+static void test_auto_is_g1_where_three_split_is_not(void)
+{
+    for (int n = 2; n <= 3; n++) {
+        fl_mesh m = g1_meshed_cube(n);
+        fl_g1_surface three = build(&m, FL_G1_THREE_SPLIT), s = build(&m, FL_G1_AUTO);
+        size_t flips, unpaired;
+        double j3 = g1_max_edge_jump(&three, 40, &flips, &unpaired);
+        CHECK_MSG(j3 > 1e-3, "n %d: the three-split is G1 here (%g deg), test mesh useless", n,
+                  j3);
+        double j = g1_max_edge_jump(&s, 40, &flips, &unpaired);
+        CHECK_MSG(j < 1e-7, "n %d: auto jump %g deg", n, j);
+        CHECK_EQ_INT(flips, 0);
+        CHECK_EQ_INT(unpaired, 0);
+        CHECK_EQ_INT(s.six_split_triangles, m.triangle_count);
+        CHECK_EQ_INT(s.patch_count, 6 * m.triangle_count);
+        CHECK_EQ_INT(check_interpolation(&m, &s), s.patch_count); /* (V, m, O): 1 vertex corner */
+        fl_g1_surface_free(&three);
+        fl_g1_surface_free(&s);
+        fl_mesh_free(&m);
+    }
+}
+
+/* Where the three-split measures G1 (icosphere, octahedron), auto is exactly the three-split:
+ * the same control points bit for bit. */
+static void test_auto_keeps_the_three_split_where_it_is_g1(void)
+{
+    fl_mesh ms[2] = {g1_icosphere(1, 0.02, 5), g1_octahedron()};
+    for (int i = 0; i < 2; i++) {
+        fl_g1_surface three = build(&ms[i], FL_G1_THREE_SPLIT), s = build(&ms[i], FL_G1_AUTO);
+        CHECK_EQ_INT(s.six_split_triangles, 0);
+        CHECK_EQ_INT(s.patch_count, three.patch_count);
+        CHECK(memcmp(s.ctrl, three.ctrl, 30 * s.patch_count * sizeof(double)) == 0);
+        CHECK(memcmp(s.corner, three.corner, 3 * s.patch_count * sizeof(uint32_t)) == 0);
+        size_t flips, unpaired;
+        CHECK(g1_max_edge_jump(&s, 40, &flips, &unpaired) < 1e-7 && flips == 0);
+        fl_g1_surface_free(&three);
+        fl_g1_surface_free(&s);
+        fl_mesh_free(&ms[i]);
+    }
+}
+
+/* Two components in one mesh: a meshed cube (needs the six-split) and, shifted away and listed
+ * first, an icosphere (the three-split suffices). Each component gets its own scheme, the
+ * patches meet only within their component (every patch edge paired, node ids distinct), the
+ * whole is G1 and interpolates, and the tessellation is two closed spheres. */
+static void test_auto_chooses_per_connected_component(void)
+{
+    fl_mesh a = g1_icosphere(1, 0.02, 7), b = g1_meshed_cube(2);
+    size_t nv = a.vertex_count + b.vertex_count, nt = a.triangle_count + b.triangle_count;
+    double *xyz = malloc(3 * nv * sizeof(double));
+    uint32_t *tri = malloc(3 * nt * sizeof(uint32_t));
+    memcpy(xyz, a.xyz, 3 * a.vertex_count * sizeof(double));
+    for (size_t i = 0; i < 3 * b.vertex_count; i++)
+        xyz[3 * a.vertex_count + i] = b.xyz[i] + 10;
+    memcpy(tri, a.tri, 3 * a.triangle_count * sizeof(uint32_t));
+    for (size_t i = 0; i < 3 * b.triangle_count; i++)
+        tri[3 * a.triangle_count + i] = b.tri[i] + (uint32_t)a.vertex_count;
+    fl_mesh m = g1_mesh_from(xyz, nv, tri, nt);
+    fl_g1_surface s = build(&m, FL_G1_AUTO);
+    CHECK_EQ_INT(s.six_split_triangles, b.triangle_count);
+    CHECK_EQ_INT(s.patch_count, 3 * a.triangle_count + 6 * b.triangle_count);
+    CHECK_EQ_INT(s.vertex_count, nv);
+    size_t flips, unpaired;
+    double j = g1_max_edge_jump(&s, 40, &flips, &unpaired);
+    CHECK_MSG(j < 1e-7, "jump %g deg", j);
+    CHECK_EQ_INT(flips, 0);
+    CHECK_EQ_INT(unpaired, 0);
+    /* three-split patches (V, V', O) have two vertex corners, six-split ones (V, m, O) one */
+    CHECK_EQ_INT(check_interpolation(&m, &s), 3 * a.triangle_count * 2 + 6 * b.triangle_count);
+    /* macro[] names the input triangle: the patch's vertex corners are that triangle's. */
+    for (size_t p = 0; p < s.patch_count; p++) {
+        const uint32_t *t = m.tri + 3 * (size_t)s.macro[p];
+        for (int c = 0; c < 3; c++) {
+            uint32_t v = s.corner[3 * p + c];
+            if (v < nv) CHECK(v == t[0] || v == t[1] || v == t[2]);
+        }
+    }
+    fl_mesh tm;
+    double *nn = NULL;
+    fl_error err;
+    CHECK_STATUS(fl_g1_surface_tessellate(&s, 2, &tm, &nn, &err), FL_OK, &err);
+    fl_mesh_report r;
+    fl_mesh_check_options skip = {.skip_self_intersections = 1};
+    CHECK_STATUS(fl_mesh_check(&tm, &skip, &r, &err), FL_OK, &err);
+    CHECK(r.closed && r.manifold && r.oriented);
+    CHECK_EQ_INT(r.duplicate_vertices, 0);
+    /* two spheres: V - E + F = 4 with E = 3F/2 */
+    CHECK_EQ_INT((long long)tm.vertex_count, (long long)tm.triangle_count / 2 + 4);
+    fl_mesh_report_free(&r);
+    free(nn);
+    fl_mesh_free(&tm);
+    fl_g1_surface_free(&s);
+    fl_mesh_free(&m);
+    free(xyz);
+    free(tri);
+    fl_mesh_free(&a);
+    fl_mesh_free(&b);
+}
+
+FL_TEST_MAIN(FL_TEST_CASE(test_auto_is_g1_where_three_split_is_not),
+             FL_TEST_CASE(test_auto_keeps_the_three_split_where_it_is_g1),
+             FL_TEST_CASE(test_auto_chooses_per_connected_component))

@@ -2,7 +2,8 @@
  * §3.2 and the coherence of §5.1): selective refinement of the base mesh by vertex splits.
  *
  * The queue holds the triangles of the current (partly refined) mesh keyed by their lower
- * bound d - radius (collapse_internal.h: they cover the input). The front triangle is
+ * bound d - ε, ε the largest current error at its corners (collapse_internal.h: they cover
+ * the input). The front triangle is
  * refined: the split of its creator runs, after the splits it depends on ("split before",
  * performed in a topological order by a depth-first walk of the dependency DAG); the split
  * replaces its new triangles by the consumed ones, which enter the queue. Triangles a split
@@ -33,6 +34,7 @@ struct fl_sweep_collapse_cursor {
     const fl_sweep_collapse *h;
     fl_sweep_heap heap;
     uint8_t *done;      /* per split */
+    double *cur;        /* per vertex: its current error (collapse_internal.h) */
     uint32_t *done_list; /* the done splits, to undo them on a reset */
     size_t done_count;
     uint32_t *stack; /* the dependency walk */
@@ -66,8 +68,8 @@ static double tri_distance(const fl_sweep_collapse *h, uint32_t t, const double 
 }
 
 /* Computes triangle t's bounds at the current query and queues it (clean). The upper bound of
- * a coarse triangle is the distance to a vertex of an input triangle it stands for: d + radius
- * would need the triangle to lie within its radius of the input too, which the ownership does
+ * a coarse triangle is the distance to a vertex of an input triangle it stands for: d + ε
+ * would need the triangle to lie within ε of the input too, which the ownership does
  * not promise (docs/sweep.md). */
 static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
 {
@@ -77,7 +79,7 @@ static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
     double d = tri_distance(h, t, st->q, bary, p), lo = d, hi = d;
     st->visited++;
     if (x->creator != FL_COLLAPSE_NONE) {
-        lo = d - x->radius - st->slack - 16 * DBL_EPSILON * c->travelled;
+        lo = d - fl_collapse_eps(h, c->cur, t) - st->slack - 16 * DBL_EPSILON * c->travelled;
         hi = INFINITY;
         if (x->rep != FL_COLLAPSE_NONE) {
             const double *r = vtx(h, x->rep);
@@ -93,27 +95,17 @@ static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
     fl_sweep_heap_push(&c->heap, (fl_sweep_entry){lo + c->travelled, c->travelled, t, 0});
 }
 
-/* Runs split k: its new triangles leave the mesh (their heap entries go stale), the triangles
- * collapse k consumed come back and are queued. */
+/* Runs split k: its new triangles leave the mesh (their heap entries go stale), u and v get
+ * their errors before the collapse back, the triangles collapse k consumed come back and are
+ * queued. */
 static void split_run(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
 {
     const fl_sweep_collapse *h = c->h;
     c->done[k] = 1;
+    fl_collapse_split_errors(h, c->cur, k);
     c->done_list[c->done_count++] = k;
     for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++)
         visit(c, st, h->old[i]);
-}
-
-/* A split of k's "split before" set that is not done yet, or NONE: the destroyers of k's new
- * triangles (each present only once its destroyer's split ran). */
-static uint32_t pending_dependency(const fl_sweep_collapse_cursor *c, uint32_t k)
-{
-    const fl_sweep_collapse *h = c->h;
-    for (uint32_t t = h->new_start[k]; t < h->new_start[k + 1]; t++) {
-        uint32_t d = h->tri[t].destroyer;
-        if (d != FL_COLLAPSE_NONE && !c->done[d]) return d;
-    }
-    return FL_COLLAPSE_NONE;
 }
 
 /* Runs split k after the splits it needs, in a topological order of the dependency DAG (a
@@ -129,7 +121,7 @@ static void refine(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
             top--;
             continue;
         }
-        uint32_t d = pending_dependency(c, j);
+        uint32_t d = fl_collapse_pending(c->h, c->done, j);
         if (d != FL_COLLAPSE_NONE) {
             c->stack[top++] = d;
             continue;
@@ -141,8 +133,13 @@ static void refine(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
 
 static void reset_to_base(fl_sweep_collapse_cursor *c, query_state *st)
 {
-    for (size_t i = 0; i < c->done_count; i++)
+    const fl_sweep_collapse *h = c->h;
+    for (size_t i = 0; i < c->done_count; i++) {
+        const fl_collapse_split *x = h->split + c->done_list[i];
         c->done[c->done_list[i]] = 0;
+        c->cur[x->u] = h->err_self[x->u];
+        c->cur[x->v] = h->err_self[x->v];
+    }
     c->done_count = 0;
     c->heap.n = 0;
     c->travelled = 0;
@@ -245,8 +242,12 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
         c->done = calloc(ns, 1);
         c->done_list = fl_alloc_array(ns, sizeof *c->done_list);
         c->stack = fl_alloc_array(ns, sizeof *c->stack);
+        c->cur = fl_alloc_array(hierarchy->vertex_count ? hierarchy->vertex_count : 1,
+                                sizeof *c->cur);
+        if (c->cur)
+            memcpy(c->cur, hierarchy->err_self, hierarchy->vertex_count * sizeof *c->cur);
     }
-    if (!c || !c->heap.e || !c->done || !c->done_list || !c->stack) {
+    if (!c || !c->heap.e || !c->done || !c->done_list || !c->stack || !c->cur) {
         fl_sweep_collapse_cursor_free(c);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a collapse cursor");
     }
@@ -261,6 +262,7 @@ void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor)
     free(cursor->done);
     free(cursor->done_list);
     free(cursor->stack);
+    free(cursor->cur);
     free(cursor);
 }
 
@@ -304,6 +306,6 @@ fl_status fl_sweep_collapse_info_get(const fl_sweep_collapse *hierarchy,
     info->triangles = h->tri_count;
     info->bytes = fl_collapse_bytes(h);
     info->cursor_bytes = sizeof(fl_sweep_collapse_cursor) + h->tri_count * sizeof(fl_sweep_entry) +
-                         ns * (1 + 2 * sizeof(uint32_t));
+                         ns * (1 + 2 * sizeof(uint32_t)) + h->vertex_count * sizeof(double);
     return FL_OK;
 }

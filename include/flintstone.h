@@ -1964,6 +1964,28 @@ void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor);
 fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const double *q, size_t nq,
                                     double tolerance, fl_closest *results, fl_error *err);
 
+/* The k input triangles nearest to q (§4.4), nearest first, as fl_sweep_knearest: the
+ * priority process continues past the first leaf; the cursor keeps the refined mesh, so
+ * coherent k-nearest queries reuse it (§5.1). FL_ERR_USAGE for NULL arguments or a bad
+ * query, FL_ERR_NOMEM. */
+fl_status fl_sweep_collapse_cursor_knearest(fl_sweep_collapse_cursor *cursor, const double *q,
+                                            size_t k, uint32_t *elements, double *distances,
+                                            size_t *found, fl_error *err);
+
+/* Every input triangle at distance <= radius (>= 0) from q, nearest first (§4.4), as
+ * fl_sweep_within (free with fl_sweep_hits_free; *out is zeroed on failure). */
+fl_status fl_sweep_collapse_cursor_within(fl_sweep_collapse_cursor *cursor, const double *q,
+                                          double radius, fl_sweep_hits *out, fl_error *err);
+
+/* fl_sweep_collapse_cursor_knearest through a temporary cursor (one query from the base mesh). */
+fl_status fl_sweep_collapse_knearest(const fl_sweep_collapse *hierarchy, const double *q, size_t k,
+                                     uint32_t *elements, double *distances, size_t *found,
+                                     fl_error *err);
+
+/* fl_sweep_collapse_cursor_within through a temporary cursor (one query from the base mesh). */
+fl_status fl_sweep_collapse_within(const fl_sweep_collapse *hierarchy, const double *q,
+                                   double radius, fl_sweep_hits *out, fl_error *err);
+
 /* end of sweep_collapse */
 
 #ifdef __cplusplus

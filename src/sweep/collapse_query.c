@@ -43,6 +43,7 @@ struct fl_sweep_collapse_cursor {
     double last_distance;
     size_t reset_cost, last_cost;
     int started;
+    fl_vec stash; /* fl_sweep_entry: input triangles popped by a k-nearest / within query */
 };
 
 typedef struct query_state {
@@ -190,14 +191,35 @@ static void answer_interval(const fl_sweep_collapse *h, const query_state *st, d
     r->exact = 0;
 }
 
-static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double tol,
-                           fl_closest *r)
+/* Starts a query at q3: the rounding slack and the §5.1 bookkeeping. */
+static void query_begin(fl_sweep_collapse_cursor *c, query_state *st, const double *q3)
+{
+    *st = (query_state){{q3[0], q3[1], q3[2]}, 0, INFINITY, FL_COLLAPSE_NONE, INFINITY, 0};
+    double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
+    st->slack = 64 * DBL_EPSILON * (c->h->scale + m);
+    advance(c, st);
+}
+
+static void query_end(fl_sweep_collapse_cursor *c, const query_state *st, double distance)
+{
+    if (c->reset_cost == SIZE_MAX) c->reset_cost = st->visited;
+    c->last_cost = st->visited;
+    c->last_distance = distance;
+}
+
+#define FRONT_NONE FL_COLLAPSE_NONE       /* queue empty or front beyond the limit */
+#define FRONT_TOLERANCE (FL_COLLAPSE_NONE - 1) /* the tolerance interval closed (§3.2) */
+
+/* The priority process (§3.2, §4.3): refines the front triangle until a clean, present input
+ * triangle is at the front and returns it (left queued, its exact distance is its key), or
+ * FRONT_NONE once the front's lower bound exceeds `limit` (or the queue is empty), or
+ * FRONT_TOLERANCE when tol > 0 and the best upper bound is within tol of the front's lower
+ * bound. *lower gets the front's lower bound. */
+static uint32_t front_leaf(fl_sweep_collapse_cursor *c, query_state *st, double limit, double tol,
+                           double *lower)
 {
     const fl_sweep_collapse *h = c->h;
-    query_state st = {{q3[0], q3[1], q3[2]}, 0, INFINITY, FL_COLLAPSE_NONE, INFINITY, 0};
-    double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
-    st.slack = 64 * DBL_EPSILON * (h->scale + m);
-    advance(c, &st);
+    *lower = INFINITY;
     while (c->heap.n > 0) {
         fl_sweep_entry top = c->heap.e[0];
         if (!fl_collapse_present(h, c->done, top.node)) { /* removed by a split */
@@ -206,26 +228,69 @@ static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double
         }
         if (top.base != c->travelled) { /* dirty (§5.1): recompute at this query */
             fl_sweep_heap_pop(&c->heap);
-            visit(c, &st, top.node);
+            visit(c, st, top.node);
             continue;
         }
-        if (top.node < h->fine_count) {
-            answer_exact(h, top.node, st.q, r);
-            break;
-        }
-        double lower = top.key - c->travelled;
-        if (tol > 0 && st.upper - lower <= tol) {
-            answer_interval(h, &st, lower, r);
-            break;
-        }
+        *lower = top.key - c->travelled;
+        if (!(*lower <= limit)) return FRONT_NONE;
+        if (top.node < h->fine_count) return top.node;
+        if (tol > 0 && st->upper - *lower <= tol) return FRONT_TOLERANCE;
         fl_sweep_heap_pop(&c->heap);
-        refine(c, &st, h->tri[top.node].creator);
+        refine(c, st, h->tri[top.node].creator);
     }
-    if (c->reset_cost == SIZE_MAX) c->reset_cost = st.visited;
-    c->last_cost = st.visited;
-    c->last_distance = r->distance;
+    return FRONT_NONE;
+}
+
+static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double tol,
+                           fl_closest *r)
+{
+    query_state st;
+    query_begin(c, &st, q3);
+    double lower;
+    uint32_t t = front_leaf(c, &st, INFINITY, tol, &lower);
+    if (t == FRONT_TOLERANCE || t == FRONT_NONE) {
+        answer_interval(c->h, &st, lower, r);
+    } else { /* (the base mesh covers a non-empty input: the queue never runs dry) */
+        answer_exact(c->h, t, st.q, r);
+    }
+    query_end(c, &st, r->distance);
     r->reused = 0;
     r->visited = st.visited;
+}
+
+/* §4.4: continues the priority process past the first leaf. Input triangles leave the front in
+ * the order of their distances; each is reported through `emit` (which returns nonzero to
+ * stop) while its distance is <= radius, then all of them are queued again, so the cursor's
+ * queue still covers the input (§5.1). Returns -1 when out of memory. */
+typedef int (*emit_fn)(void *user, uint32_t element, double distance);
+
+static int collapse_ordered(fl_sweep_collapse_cursor *c, const double *q3, double radius,
+                            emit_fn emit, void *user)
+{
+    query_state st;
+    query_begin(c, &st, q3);
+    /* the keys of leaves are d + travelled in floating point: leaves a little beyond radius
+     * are popped too (and not reported) so that none at distance <= radius is missed */
+    double limit = radius + st.slack + 4 * DBL_EPSILON * c->travelled, lower, first = -1;
+    int status = 0;
+    c->stash.count = 0;
+    for (;;) {
+        uint32_t t = front_leaf(c, &st, limit, 0, &lower);
+        if (t == FRONT_NONE) break;
+        fl_sweep_entry x = fl_sweep_heap_pop(&c->heap);
+        if (fl_vec_push(&c->stash, &x, 1)) {
+            fl_sweep_heap_push(&c->heap, x);
+            status = -1;
+            break;
+        }
+        double bary[3], p[3], d = tri_distance(c->h, t, st.q, bary, p);
+        if (first < 0) first = d;
+        if (d <= radius && emit(user, t, d)) break;
+    }
+    for (size_t i = 0; i < c->stash.count; i++)
+        fl_sweep_heap_push(&c->heap, ((fl_sweep_entry *)c->stash.data)[i]);
+    query_end(c, &st, first >= 0 ? first : fmax(0, lower < INFINITY ? lower : 0));
+    return status;
 }
 
 fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
@@ -238,6 +303,7 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
     size_t ns = hierarchy->split_count ? hierarchy->split_count : 1;
     if (c) {
         c->h = hierarchy;
+        fl_vec_init(&c->stash, sizeof(fl_sweep_entry));
         c->heap.e = fl_alloc_array(hierarchy->tri_count, sizeof *c->heap.e);
         c->done = calloc(ns, 1);
         c->done_list = fl_alloc_array(ns, sizeof *c->done_list);
@@ -263,7 +329,16 @@ void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor)
     free(cursor->done_list);
     free(cursor->stack);
     free(cursor->cur);
+    fl_vec_free(&cursor->stash);
     free(cursor);
+}
+
+static fl_status check_query(const double *q, fl_error *err)
+{
+    for (int i = 0; i < 3; i++)
+        if (!fl_sweep_coord_ok(q[i]))
+            return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
+    return FL_OK;
 }
 
 fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
@@ -272,11 +347,103 @@ fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, con
     if (!cursor || !q || !result)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and result must not be NULL");
     if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
-    for (int i = 0; i < 3; i++)
-        if (!fl_sweep_coord_ok(q[i]))
-            return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
-    collapse_query(cursor, q, tolerance, result);
+    fl_status st = check_query(q, err);
+    if (st == FL_OK) collapse_query(cursor, q, tolerance, result);
+    return st;
+}
+
+typedef struct knearest_out {
+    uint32_t *element;
+    double *distance;
+    size_t k, found;
+} knearest_out;
+
+static int emit_knearest(void *user, uint32_t element, double distance)
+{
+    knearest_out *o = user;
+    o->element[o->found] = element;
+    o->distance[o->found++] = distance;
+    return o->found == o->k;
+}
+
+fl_status fl_sweep_collapse_cursor_knearest(fl_sweep_collapse_cursor *cursor, const double *q,
+                                            size_t k, uint32_t *elements, double *distances,
+                                            size_t *found, fl_error *err)
+{
+    if (!cursor || !q || !found || (k > 0 && (!elements || !distances)))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and outputs must not be NULL");
+    *found = 0;
+    fl_status st = check_query(q, err);
+    if (st != FL_OK || k == 0) return st;
+    knearest_out o = {elements, distances, k, 0};
+    if (collapse_ordered(cursor, q, INFINITY, emit_knearest, &o))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a k-nearest query");
+    *found = o.found;
     return FL_OK;
+}
+
+typedef struct within_out {
+    fl_vec element, distance;
+    int failed;
+} within_out;
+
+static int emit_within(void *user, uint32_t element, double distance)
+{
+    within_out *o = user;
+    o->failed = fl_vec_push(&o->element, &element, 1) || fl_vec_push(&o->distance, &distance, 1);
+    return o->failed;
+}
+
+fl_status fl_sweep_collapse_cursor_within(fl_sweep_collapse_cursor *cursor, const double *q,
+                                          double radius, fl_sweep_hits *out, fl_error *err)
+{
+    if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "output must not be NULL");
+    *out = (fl_sweep_hits){0, NULL, NULL};
+    if (!cursor || !q) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor and query must not be NULL");
+    if (!(radius >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "radius must be >= 0");
+    fl_status st = check_query(q, err);
+    if (st != FL_OK) return st;
+    within_out o = {.failed = 0};
+    fl_vec_init(&o.element, sizeof(uint32_t));
+    fl_vec_init(&o.distance, sizeof(double));
+    int nomem = collapse_ordered(cursor, q, radius, emit_within, &o) || o.failed;
+    size_t n = o.element.count;
+    if (!nomem && n == 0) { /* a zeroed struct is "no hits"; allocate as fl_sweep_within does */
+        nomem = fl_vec_reserve(&o.element, 1) || fl_vec_reserve(&o.distance, 1);
+    }
+    out->element = fl_vec_release(&o.element);
+    out->distance = fl_vec_release(&o.distance);
+    if (nomem || !out->element || !out->distance) {
+        fl_sweep_hits_free(out);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hits of a query");
+    }
+    out->count = n;
+    return FL_OK;
+}
+
+/* Runs one query through a temporary cursor (the hierarchy itself is never changed). */
+fl_status fl_sweep_collapse_knearest(const fl_sweep_collapse *hierarchy, const double *q, size_t k,
+                                     uint32_t *elements, double *distances, size_t *found,
+                                     fl_error *err)
+{
+    if (found) *found = 0;
+    fl_sweep_collapse_cursor *c;
+    fl_status st = fl_sweep_collapse_cursor_new(hierarchy, &c, err);
+    if (st == FL_OK)
+        st = fl_sweep_collapse_cursor_knearest(c, q, k, elements, distances, found, err);
+    fl_sweep_collapse_cursor_free(c);
+    return st;
+}
+
+fl_status fl_sweep_collapse_within(const fl_sweep_collapse *hierarchy, const double *q,
+                                   double radius, fl_sweep_hits *out, fl_error *err)
+{
+    if (out) *out = (fl_sweep_hits){0, NULL, NULL};
+    fl_sweep_collapse_cursor *c;
+    fl_status st = fl_sweep_collapse_cursor_new(hierarchy, &c, err);
+    if (st == FL_OK) st = fl_sweep_collapse_cursor_within(c, q, radius, out, err);
+    fl_sweep_collapse_cursor_free(c);
+    return st;
 }
 
 fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const double *q, size_t nq,

@@ -1951,8 +1951,9 @@ fl_status fl_sweep_collapse_info_get(const fl_sweep_collapse *hierarchy,
 fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
                                        fl_sweep_collapse_cursor **out, fl_error *err);
 
-/* One query (q holds 3 doubles) as in fl_sweep_cursor_closest; `reused` is always 0 and
- * `visited` counts the triangles whose distance was computed. FL_ERR_USAGE for NULL
+/* One query (q holds 3 doubles) as in fl_sweep_cursor_closest; `reused` = 1 when answered from
+ * the last exact answer's §3.3 ball (one distance), `visited` counts the triangles whose
+ * distance was computed. FL_ERR_USAGE for NULL
  * arguments, a negative tolerance or a query not finite or beyond 1e150. */
 fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
                                            double tolerance, fl_closest *result, fl_error *err);

@@ -44,6 +44,9 @@ struct fl_sweep_collapse_cursor {
     size_t reset_cost, last_cost;
     int started;
     fl_vec stash; /* fl_sweep_entry: input triangles popped by a k-nearest / within query */
+    int have_ball;    /* §3.3: the last exact answer's ball is valid */
+    double ball_r;    /* around q: within it, ball_leaf stays the closest */
+    uint32_t ball_leaf;
 };
 
 typedef struct query_state {
@@ -160,6 +163,7 @@ static void advance(fl_sweep_collapse_cursor *c, query_state *st)
     int reset = !c->started || !(move <= c->last_distance) || c->last_cost > c->reset_cost ||
                 c->heap.n > 8 * c->reset_cost + 64 + c->h->base_count;
     memcpy(c->q, st->q, sizeof c->q);
+    c->have_ball = 0;
     if (reset) {
         reset_to_base(c, st);
     } else {
@@ -241,6 +245,21 @@ static uint32_t front_leaf(fl_sweep_collapse_cursor *c, query_state *st, double 
     return FRONT_NONE;
 }
 
+/* §3.3 after an exact answer t at distance d (t at the heap's front): every other present
+ * triangle is in the heap (with stale ones, whose keys only make this smaller) with a lower
+ * bound >= the smaller key at positions 1 and 2, the second interval's lower end. A query
+ * moved by less than half the gap keeps t as its closest triangle. */
+static void set_ball(fl_sweep_collapse_cursor *c, const query_state *st, uint32_t t, double d)
+{
+    double second = INFINITY;
+    for (size_t i = 1; i <= 2 && i < c->heap.n; i++)
+        second = fmin(second, c->heap.e[i].key - c->travelled);
+    double r = (second - d) / 2 - 2 * st->slack - 16 * DBL_EPSILON * c->travelled;
+    c->have_ball = r > 0;
+    c->ball_r = r;
+    c->ball_leaf = t;
+}
+
 static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double tol,
                            fl_closest *r)
 {
@@ -252,6 +271,7 @@ static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double
         answer_interval(c->h, &st, lower, r);
     } else { /* (the base mesh covers a non-empty input: the queue never runs dry) */
         answer_exact(c->h, t, st.q, r);
+        set_ball(c, &st, t, r->distance);
     }
     query_end(c, &st, r->distance);
     r->reused = 0;
@@ -348,8 +368,20 @@ fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, con
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and result must not be NULL");
     if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
     fl_status st = check_query(q, err);
-    if (st == FL_OK) collapse_query(cursor, q, tolerance, result);
-    return st;
+    if (st != FL_OK) return st;
+    if (cursor->have_ball) { /* §3.3: the cursor's state stays that of the ball's centre */
+        double d2 = 0;
+        for (int i = 0; i < 3; i++)
+            d2 += (q[i] - cursor->q[i]) * (q[i] - cursor->q[i]);
+        if (sqrt(d2) < cursor->ball_r) {
+            answer_exact(cursor->h, cursor->ball_leaf, q, result);
+            result->reused = 1;
+            result->visited = 1;
+            return FL_OK;
+        }
+    }
+    collapse_query(cursor, q, tolerance, result);
+    return FL_OK;
 }
 
 typedef struct knearest_out {

@@ -35,6 +35,7 @@ struct fl_sweep_collapse_cursor {
     fl_sweep_heap heap;
     uint8_t *done;      /* per split */
     double *cur;        /* per vertex: its current error (collapse_internal.h) */
+    double *key;        /* per hierarchy triangle: its last key (valid once queued) */
     uint32_t *done_list; /* the done splits, to undo them on a reset */
     size_t done_count;
     uint32_t *stack; /* the dependency walk */
@@ -56,6 +57,7 @@ typedef struct query_state {
     uint32_t best;   /* nearest input triangle evaluated, for early stops */
     double best_d;
     size_t visited;
+    int want_upper; /* only tolerance queries use upper bounds (§3.2 early stop) */
 } query_state;
 
 static const double *vtx(const fl_sweep_collapse *h, uint32_t v)
@@ -85,7 +87,7 @@ static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
     if (x->creator != FL_COLLAPSE_NONE) {
         lo = d - fl_collapse_eps(h, c->cur, t) - st->slack - 16 * DBL_EPSILON * c->travelled;
         hi = INFINITY;
-        if (x->rep != FL_COLLAPSE_NONE) {
+        if (st->want_upper && x->rep != FL_COLLAPSE_NONE) {
             const double *r = vtx(h, x->rep);
             hi = sqrt((st->q[0] - r[0]) * (st->q[0] - r[0]) + (st->q[1] - r[1]) * (st->q[1] - r[1]) +
                       (st->q[2] - r[2]) * (st->q[2] - r[2])) +
@@ -96,20 +98,37 @@ static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
         st->best = t;
     }
     if (hi < st->upper) st->upper = hi;
+    c->key[t] = lo + c->travelled;
     fl_sweep_heap_push(&c->heap, (fl_sweep_entry){lo + c->travelled, c->travelled, t, 0});
 }
 
+#define LAZY (-1.0) /* the `base` of an entry whose distance is not computed yet (never equal
+                     * to the travelled distance, which is >= 0) */
+
 /* Runs split k: its new triangles leave the mesh (their heap entries go stale), u and v get
  * their errors before the collapse back, the triangles collapse k consumed come back and are
- * queued. */
-static void split_run(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
+ * queued. With `lazy` (a split run only because another one depends on it) their distances
+ * are not computed: they stand for the same input triangles as k's new ones, so the smallest
+ * key among those is a valid lower bound for each of them; they are queued with it as dirty
+ * entries (§5.1's mechanism) and computed only if they reach the front. Most never do. */
+static void split_run(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k, int lazy)
 {
     const fl_sweep_collapse *h = c->h;
+    double key = INFINITY;
+    for (uint32_t t = h->new_start[k]; lazy && t < h->new_start[k + 1]; t++)
+        key = fmin(key, c->key[t]); /* present, hence queued since the last reset */
     c->done[k] = 1;
     fl_collapse_split_errors(h, c->cur, k);
     c->done_list[c->done_count++] = k;
-    for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++)
-        visit(c, st, h->old[i]);
+    for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++) {
+        uint32_t t = h->old[i];
+        if (!lazy) {
+            visit(c, st, t);
+            continue;
+        }
+        c->key[t] = key;
+        fl_sweep_heap_push(&c->heap, (fl_sweep_entry){key, LAZY, t, 0});
+    }
 }
 
 /* Runs split k after the splits it needs, in a topological order of the dependency DAG (a
@@ -131,7 +150,7 @@ static void refine(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
             continue;
         }
         top--;
-        split_run(c, st, j);
+        split_run(c, st, j, j != k);
     }
 }
 
@@ -196,9 +215,11 @@ static void answer_interval(const fl_sweep_collapse *h, const query_state *st, d
 }
 
 /* Starts a query at q3: the rounding slack and the §5.1 bookkeeping. */
-static void query_begin(fl_sweep_collapse_cursor *c, query_state *st, const double *q3)
+static void query_begin(fl_sweep_collapse_cursor *c, query_state *st, const double *q3,
+                        int want_upper)
 {
-    *st = (query_state){{q3[0], q3[1], q3[2]}, 0, INFINITY, FL_COLLAPSE_NONE, INFINITY, 0};
+    *st = (query_state){{q3[0], q3[1], q3[2]}, 0, INFINITY, FL_COLLAPSE_NONE, INFINITY, 0,
+                        want_upper};
     double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
     st->slack = 64 * DBL_EPSILON * (c->h->scale + m);
     advance(c, st);
@@ -264,7 +285,7 @@ static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double
                            fl_closest *r)
 {
     query_state st;
-    query_begin(c, &st, q3);
+    query_begin(c, &st, q3, tol > 0);
     double lower;
     uint32_t t = front_leaf(c, &st, INFINITY, tol, &lower);
     if (t == FRONT_TOLERANCE || t == FRONT_NONE) {
@@ -288,7 +309,7 @@ static int collapse_ordered(fl_sweep_collapse_cursor *c, const double *q3, doubl
                             emit_fn emit, void *user)
 {
     query_state st;
-    query_begin(c, &st, q3);
+    query_begin(c, &st, q3, 0);
     /* the keys of leaves are d + travelled in floating point: leaves a little beyond radius
      * are popped too (and not reported) so that none at distance <= radius is missed */
     double limit = radius + st.slack + 4 * DBL_EPSILON * c->travelled, lower, first = -1;
@@ -325,6 +346,7 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
         c->h = hierarchy;
         fl_vec_init(&c->stash, sizeof(fl_sweep_entry));
         c->heap.e = fl_alloc_array(hierarchy->tri_count, sizeof *c->heap.e);
+        c->key = fl_alloc_array(hierarchy->tri_count, sizeof *c->key);
         c->done = calloc(ns, 1);
         c->done_list = fl_alloc_array(ns, sizeof *c->done_list);
         c->stack = fl_alloc_array(ns, sizeof *c->stack);
@@ -333,7 +355,8 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
         if (c->cur)
             memcpy(c->cur, hierarchy->err_self, hierarchy->vertex_count * sizeof *c->cur);
     }
-    if (!c || !c->heap.e || !c->done || !c->done_list || !c->stack || !c->cur) {
+    if (!c || !c->heap.e || !c->done || !c->done_list || !c->stack || !c->cur ||
+        !c->key) {
         fl_sweep_collapse_cursor_free(c);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a collapse cursor");
     }
@@ -349,6 +372,7 @@ void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor)
     free(cursor->done_list);
     free(cursor->stack);
     free(cursor->cur);
+    free(cursor->key);
     fl_vec_free(&cursor->stash);
     free(cursor);
 }
@@ -505,6 +529,7 @@ fl_status fl_sweep_collapse_info_get(const fl_sweep_collapse *hierarchy,
     info->triangles = h->tri_count;
     info->bytes = fl_collapse_bytes(h);
     info->cursor_bytes = sizeof(fl_sweep_collapse_cursor) + h->tri_count * sizeof(fl_sweep_entry) +
-                         ns * (1 + 2 * sizeof(uint32_t)) + h->vertex_count * sizeof(double);
+                         ns * (1 + 2 * sizeof(uint32_t)) + h->vertex_count * sizeof(double) +
+                         h->tri_count * sizeof(double);
     return FL_OK;
 }

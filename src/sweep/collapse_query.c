@@ -36,6 +36,7 @@ struct fl_sweep_collapse_cursor {
     uint8_t *done;      /* per split */
     double *cur;        /* per vertex: its current error (collapse_internal.h) */
     double *key;        /* per hierarchy triangle: its last key (valid once queued) */
+    int groups;         /* lazy splits queue one group entry (split_run) */
     uint32_t *done_list; /* the done splits, to undo them on a reset */
     size_t done_count;
     uint32_t *stack; /* the dependency walk */
@@ -109,8 +110,10 @@ static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
  * their errors before the collapse back, the triangles collapse k consumed come back and are
  * queued. With `lazy` (a split run only because another one depends on it) their distances
  * are not computed: they stand for the same input triangles as k's new ones, so the smallest
- * key among those is a valid lower bound for each of them; they are queued with it as dirty
- * entries (§5.1's mechanism) and computed only if they reach the front. Most never do. */
+ * key among those is a valid lower bound for each of them. They are queued as one entry of
+ * that key, node tri_count + k (a "group"), expanded only if it reaches the front (most never
+ * do); if the node numbers would not fit in 32 bits, one dirty entry each (§5.1's
+ * mechanism) instead. */
 static void split_run(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k, int lazy)
 {
     const fl_sweep_collapse *h = c->h;
@@ -127,8 +130,18 @@ static void split_run(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k, 
             continue;
         }
         c->key[t] = key;
-        fl_sweep_heap_push(&c->heap, (fl_sweep_entry){key, LAZY, t, 0});
+        if (!c->groups) fl_sweep_heap_push(&c->heap, (fl_sweep_entry){key, LAZY, t, 0});
     }
+    if (lazy && c->groups)
+        fl_sweep_heap_push(&c->heap, (fl_sweep_entry){key, LAZY, (uint32_t)h->tri_count + k, 0});
+}
+
+/* A group entry at the front: its triangles still present are computed and queued. */
+static void expand_group(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
+{
+    const fl_sweep_collapse *h = c->h;
+    for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++)
+        if (fl_collapse_present(h, c->done, h->old[i])) visit(c, st, h->old[i]);
 }
 
 /* Runs split k after the splits it needs, in a topological order of the dependency DAG (a
@@ -247,6 +260,11 @@ static uint32_t front_leaf(fl_sweep_collapse_cursor *c, query_state *st, double 
     *lower = INFINITY;
     while (c->heap.n > 0) {
         fl_sweep_entry top = c->heap.e[0];
+        if (top.node >= h->tri_count) {
+            fl_sweep_heap_pop(&c->heap);
+            expand_group(c, st, top.node - (uint32_t)h->tri_count);
+            continue;
+        }
         if (!fl_collapse_present(h, c->done, top.node)) { /* removed by a split */
             fl_sweep_heap_pop(&c->heap);
             continue;
@@ -345,7 +363,10 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
     if (c) {
         c->h = hierarchy;
         fl_vec_init(&c->stash, sizeof(fl_sweep_entry));
-        c->heap.e = fl_alloc_array(hierarchy->tri_count, sizeof *c->heap.e);
+        /* every triangle at most once, plus one group entry per split */
+        c->groups = hierarchy->tri_count + hierarchy->split_count < UINT32_MAX;
+        c->heap.e = fl_alloc_array(hierarchy->tri_count + hierarchy->split_count,
+                                   sizeof *c->heap.e);
         c->key = fl_alloc_array(hierarchy->tri_count, sizeof *c->key);
         c->done = calloc(ns, 1);
         c->done_list = fl_alloc_array(ns, sizeof *c->done_list);
@@ -528,7 +549,8 @@ fl_status fl_sweep_collapse_info_get(const fl_sweep_collapse *hierarchy,
     info->splits = h->split_count;
     info->triangles = h->tri_count;
     info->bytes = fl_collapse_bytes(h);
-    info->cursor_bytes = sizeof(fl_sweep_collapse_cursor) + h->tri_count * sizeof(fl_sweep_entry) +
+    info->cursor_bytes = sizeof(fl_sweep_collapse_cursor) +
+                         (h->tri_count + h->split_count) * sizeof(fl_sweep_entry) +
                          ns * (1 + 2 * sizeof(uint32_t)) + h->vertex_count * sizeof(double) +
                          h->tri_count * sizeof(double);
     return FL_OK;

@@ -438,9 +438,9 @@ typedef struct knearest_out {
 static int emit_knearest(void *user, uint32_t element, double distance)
 {
     knearest_out *o = user;
-    o->element[o->found] = element;
-    o->distance[o->found++] = distance;
-    return o->found == o->k;
+    size_t i = o->found++;
+    o->element[i] = element, o->distance[i] = distance;
+    return o->found >= o->k; /* k > 0 here */
 }
 
 fl_status fl_sweep_collapse_cursor_knearest(fl_sweep_collapse_cursor *cursor, const double *q,

@@ -94,6 +94,45 @@ static void check_motion(fz_in *in, int kind, int dim, int closed, const double 
     fl_sweep_keyframes_free(kf);
 }
 
+/* §4.4 on the collapse hierarchy, first query: the k nearest are as many as min(k, triangles),
+ * sorted, each at its brute-force distance, the first at the brute-force minimum; the hits
+ * within the k-th distance are within it. */
+static void collapse_neighbours(const fl_sweep_collapse *col, const double *q, double qmax,
+                                const double *pts3, const uint32_t *tri, size_t nt)
+{
+    uint32_t el[4];
+    double d[4];
+    size_t n = 0;
+    fl_error err;
+    fl_status st = fl_sweep_collapse_knearest(col, q, 4, el, d, &n, &err);
+    fz_check_status(st, &err, "fl_sweep_collapse_knearest");
+    FZ_ASSERT(st == FL_OK && n == (nt < 4 ? nt : 4), "collapse knearest: status %d, %zu found",
+              (int)st, n);
+    ld best = INFINITY;
+    for (size_t e = 0; e < nt; e++) {
+        ld x = oracle_mesh_element(pts3, tri, e, q);
+        if (x < best) best = x;
+    }
+    double slack = 1e-9 * (qmax + (double)best) + 1e-150; /* as check_answers */
+    for (size_t i = 0; i < n; i++) {
+        FZ_ASSERT(el[i] < nt, "collapse knearest: element %u", el[i]);
+        ld bf = oracle_mesh_element(pts3, tri, el[i], q);
+        FZ_ASSERT(fabsl((ld)d[i] - bf) <= slack, "collapse knearest %zu: %.17g, brute %.17Lg", i,
+                  d[i], bf);
+        FZ_ASSERT(i > 0 || fabsl((ld)d[0] - best) <= slack, "collapse knearest: not the nearest");
+        FZ_ASSERT(i == 0 || d[i] >= d[i - 1] - slack, "collapse knearest: not sorted");
+    }
+    if (n == 0) return;
+    fl_sweep_hits hits = {0};
+    st = fl_sweep_collapse_within(col, q, d[n - 1], &hits, &err);
+    fz_check_status(st, &err, "fl_sweep_collapse_within");
+    FZ_ASSERT(st == FL_OK && hits.count >= 1, "collapse within: status %d, %zu hits", (int)st,
+              hits.count);
+    for (size_t i = 0; i < hits.count; i++)
+        FZ_ASSERT(hits.distance[i] <= d[n - 1], "collapse within: hit beyond the radius");
+    fl_sweep_hits_free(&hits);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fz_in in = {data, size, 0};
@@ -169,6 +208,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         } else {
             FZ_ASSERT(st == FL_OK, "collapse closest failed: %s", err.message);
             check_answers(res, q, nq, dim, tol, qmax, kind, pts3, tri, nv, elements);
+            if (nq > 0) collapse_neighbours(col, q, qmax, pts3, tri, nt);
         }
         fl_sweep_collapse_free(col);
     }

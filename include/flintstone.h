@@ -1966,8 +1966,9 @@ fl_status fl_sweep_collapse_info_get(const fl_sweep_collapse *hierarchy,
 fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
                                        fl_sweep_collapse_cursor **out, fl_error *err);
 
-/* One query (q holds 3 doubles) as in fl_sweep_cursor_closest; `reused` is always 0 and
- * `visited` counts the triangles whose distance was computed. FL_ERR_USAGE for NULL
+/* One query (q holds 3 doubles) as in fl_sweep_cursor_closest; `reused` = 1 when answered from
+ * the last exact answer's §3.3 ball (one distance), `visited` counts the triangles whose
+ * distance was computed. FL_ERR_USAGE for NULL
  * arguments, a negative tolerance or a query not finite or beyond 1e150. */
 fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
                                            double tolerance, fl_closest *result, fl_error *err);
@@ -1978,6 +1979,28 @@ void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor);
 /* Answers nq queries (3 doubles each) in order through one cursor, as fl_sweep_closest. */
 fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const double *q, size_t nq,
                                     double tolerance, fl_closest *results, fl_error *err);
+
+/* The k input triangles nearest to q (§4.4), nearest first, as fl_sweep_knearest: the
+ * priority process continues past the first leaf; the cursor keeps the refined mesh, so
+ * coherent k-nearest queries reuse it (§5.1). FL_ERR_USAGE for NULL arguments or a bad
+ * query, FL_ERR_NOMEM. */
+fl_status fl_sweep_collapse_cursor_knearest(fl_sweep_collapse_cursor *cursor, const double *q,
+                                            size_t k, uint32_t *elements, double *distances,
+                                            size_t *found, fl_error *err);
+
+/* Every input triangle at distance <= radius (>= 0) from q, nearest first (§4.4), as
+ * fl_sweep_within (free with fl_sweep_hits_free; *out is zeroed on failure). */
+fl_status fl_sweep_collapse_cursor_within(fl_sweep_collapse_cursor *cursor, const double *q,
+                                          double radius, fl_sweep_hits *out, fl_error *err);
+
+/* fl_sweep_collapse_cursor_knearest through a temporary cursor (one query from the base mesh). */
+fl_status fl_sweep_collapse_knearest(const fl_sweep_collapse *hierarchy, const double *q, size_t k,
+                                     uint32_t *elements, double *distances, size_t *found,
+                                     fl_error *err);
+
+/* fl_sweep_collapse_cursor_within through a temporary cursor (one query from the base mesh). */
+fl_status fl_sweep_collapse_within(const fl_sweep_collapse *hierarchy, const double *q,
+                                   double radius, fl_sweep_hits *out, fl_error *err);
 
 /* end of sweep_collapse */
 

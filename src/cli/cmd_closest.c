@@ -24,8 +24,8 @@ static const char *usage_text =
     "  --k N          also list the N nearest elements of each query (CSV rows)\n"
     "  --within D     also list every element within distance D of each query (CSV rows)\n"
     "  --hierarchy H  spatial (default): a tree of triangles split top-down; collapse: the\n"
-    "                 paper's edge-collapse hierarchy refined by vertex splits (meshes only,\n"
-    "                 not with --k / --within)\n"
+    "                 paper's edge-collapse hierarchy refined by vertex splits (meshes only;\n"
+    "                 --k / --within run through one cursor, queries in file order)\n"
     "  -o OUT.csv     closest: query,distance,x,y,z,element,b0,b1,b2,lower,upper;\n"
     "                 with --k / --within: query,rank,element,distance\n"
     "  --json         queries, mean_distance, max_distance, seconds, queries_per_second\n"
@@ -77,8 +77,6 @@ static int parse(int argc, char **argv, cli_common *c, closest_args *a)
         }
     }
     if (a->k && a->has_within) return cli_fail(1, "closest: give --k or --within, not both");
-    if (a->collapse && (a->k || a->has_within))
-        return cli_fail(1, "closest: --hierarchy collapse does not support --k / --within");
     return 0;
 }
 
@@ -121,9 +119,23 @@ static void write_closest_row(FILE *fp, size_t i, const fl_closest *r)
             r->bary[2], r->lower, r->upper);
 }
 
+/* One --k / --within query on whichever hierarchy was built (c: a cursor on the collapse
+ * hierarchy, kept across the queries for §5.1). */
+static fl_status neighbours_one(const closest_args *a, const fl_sweep *s,
+                                fl_sweep_collapse_cursor *c, const double *qi, uint32_t *el,
+                                double *d, size_t *found, fl_sweep_hits *hits, fl_error *err)
+{
+    if (a->k)
+        return c ? fl_sweep_collapse_cursor_knearest(c, qi, a->k, el, d, found, err)
+                 : fl_sweep_knearest(s, qi, a->k, el, d, found, err);
+    return c ? fl_sweep_collapse_cursor_within(c, qi, a->within, hits, err)
+             : fl_sweep_within(s, qi, a->within, hits, err);
+}
+
 /* --k / --within: the ranked element lists, one CSV row an element. */
-static fl_status write_neighbours(const closest_args *a, const fl_sweep *s, const fl_points *q,
-                                  FILE *fp, fl_error *err)
+static fl_status write_neighbours(const closest_args *a, const fl_sweep *s,
+                                  const fl_sweep_collapse *hc, const fl_points *q, FILE *fp,
+                                  fl_error *err)
 {
     fputs("query,rank,element,distance\n", fp);
     size_t k = a->k;
@@ -134,22 +146,19 @@ static fl_status write_neighbours(const closest_args *a, const fl_sweep *s, cons
         free(d);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     }
-    fl_status st = FL_OK;
+    fl_sweep_collapse_cursor *c = NULL;
+    fl_status st = hc ? fl_sweep_collapse_cursor_new(hc, &c, err) : FL_OK;
     for (size_t i = 0; st == FL_OK && i < q->count; i++) {
-        const double *qi = q->coords + (size_t)q->dim * i;
-        if (k) {
-            size_t found = 0;
-            st = fl_sweep_knearest(s, qi, k, el, d, &found, err);
-            for (size_t j = 0; st == FL_OK && j < found; j++)
-                fprintf(fp, "%zu,%zu,%u,%.17g\n", i, j, el[j], d[j]);
-        } else {
-            fl_sweep_hits hits = {0};
-            st = fl_sweep_within(s, qi, a->within, &hits, err);
-            for (size_t j = 0; st == FL_OK && j < hits.count; j++)
-                fprintf(fp, "%zu,%zu,%u,%.17g\n", i, j, hits.element[j], hits.distance[j]);
-            fl_sweep_hits_free(&hits);
-        }
+        size_t found = 0;
+        fl_sweep_hits hits = {0};
+        st = neighbours_one(a, s, c, q->coords + (size_t)q->dim * i, el, d, &found, &hits, err);
+        for (size_t j = 0; st == FL_OK && j < found; j++)
+            fprintf(fp, "%zu,%zu,%u,%.17g\n", i, j, el[j], d[j]);
+        for (size_t j = 0; st == FL_OK && j < hits.count; j++)
+            fprintf(fp, "%zu,%zu,%u,%.17g\n", i, j, hits.element[j], hits.distance[j]);
+        fl_sweep_hits_free(&hits);
     }
+    fl_sweep_collapse_cursor_free(c);
     free(el);
     free(d);
     return st;
@@ -165,7 +174,7 @@ static fl_status run(const cli_common *c, const closest_args *a, const fl_sweep 
     fl_out_file out;
     if ((st = fl_out_open(&out, c->output, 0, err))) return st;
     if (a->k || a->has_within) {
-        st = write_neighbours(a, s, q, out.fp, err);
+        st = write_neighbours(a, s, hc, q, out.fp, err);
     } else {
         fputs("query,distance,x,y,z,element,b0,b1,b2,lower,upper\n", out.fp);
         for (size_t i = 0; i < q->count; i++)

@@ -4,7 +4,7 @@
  * Simplification: half-edge collapses u -> v (v keeps its position, so every triangle of the
  * hierarchy has input vertices as corners) in order of increasing edge length, each checked
  * for safety first (collapse_safe). A collapse hands the fine triangles owned by the consumed
- * triangles to the nearest new triangle and grows its radius to cover them (the invariant of
+ * triangles to the nearest new triangle and grows v's error to reach them (the invariant of
  * collapse_internal.h); this, not the safety checks, is what the queries' exactness rests on,
  * so a mesh of any topology gives correct bounds. Arrays only: triangles, corner lists and
  * ownership lists are indices into growable arrays, no per-node allocation (§4.2). */
@@ -28,8 +28,13 @@ typedef struct builder {
     fl_vec ends;   /* uint32 pairs: the vertices of candidate edge i (heap entries' node) */
     fl_vec old;    /* uint32: consumed triangles of every collapse */
     fl_vec old_start, new_start; /* uint32 per collapse */
+    fl_vec rad;    /* double per triangle: r(t), what its swept sphere must reach */
+    fl_vec split;  /* fl_collapse_split per collapse */
     uint32_t *chead; /* per vertex: first corner */
     uint32_t *fnext; /* per fine triangle: next fine triangle of the same owner */
+    double *err;     /* per vertex: its error so far (collapse_internal.h) */
+    double *err_parent; /* per vertex: the parent's error before contracting it */
+    uint32_t *last;  /* per vertex: the last collapse of its chain so far, or NONE */
 } builder;
 
 /* A vertex's live triangles, with their neighbour vertices and how many of the triangles
@@ -91,10 +96,11 @@ static fl_sweep_entry edge_pop(builder *b)
 
 static int tri_add(builder *b, const uint32_t v[3], uint32_t creator)
 {
-    fl_collapse_tri x = {{v[0], v[1], v[2]}, FL_COLLAPSE_NONE, creator, FL_COLLAPSE_NONE, 0};
+    fl_collapse_tri x = {{v[0], v[1], v[2]}, FL_COLLAPSE_NONE, creator, FL_COLLAPSE_NONE};
     uint32_t t = (uint32_t)b->tris.count, none = FL_COLLAPSE_NONE;
+    double zero = 0;
     if (fl_vec_push(&b->tris, &x, 1) || fl_vec_push(&b->fhead, &none, 1) ||
-        fl_vec_push(&b->cnext, NULL, 3))
+        fl_vec_push(&b->cnext, NULL, 3) || fl_vec_push(&b->rad, &zero, 1))
         return -1;
     for (int k = 0; k < 3; k++) {
         *u32_at(&b->cnext, 3 * (size_t)t + k) = b->chead[v[k]];
@@ -248,7 +254,7 @@ static double tri_point_distance(const builder *b, const fl_collapse_tri *t, con
 }
 
 /* Hands fine triangle f to the new triangle (first .. end) nearest its centroid and grows that
- * triangle's radius to contain f's three vertices (then f, by convexity). */
+ * triangle's r(t) to reach f's three vertices (then f, by convexity). */
 static void assign_fine(builder *b, uint32_t f, uint32_t first, uint32_t end, double scale)
 {
     const uint32_t *fv = b->m->tri + 3 * (size_t)f;
@@ -262,14 +268,37 @@ static void assign_fine(builder *b, uint32_t f, uint32_t first, uint32_t end, do
         if (d < best_d) best_d = d, best = t;
     }
     fl_collapse_tri *t = tri_at(b, best);
+    double *r = (double *)b->rad.data + best;
     for (int k = 0; k < 3; k++) {
         double d = fl_sweep_widen(tri_point_distance(b, t, vert(b, fv[k])), scale);
-        if (!(t->radius >= d)) t->radius = d;
+        if (!(*r >= d)) *r = d;
     }
     if (t->rep == FL_COLLAPSE_NONE) t->rep = fv[0];
     uint32_t *head = u32_at(&b->fhead, best);
     b->fnext[f] = *head;
     *head = f;
+}
+
+/* Records collapse k (u -> v) in the vertex errors and chains (collapse_internal.h): v's
+ * error grows to reach the new triangles' fine ones; k follows the last collapses of u's and
+ * v's chains. */
+static int record_errors(builder *b, uint32_t k, uint32_t u, uint32_t v, uint32_t first,
+                         uint32_t end)
+{
+    fl_collapse_split x = {u, v, FL_COLLAPSE_NONE};
+    if (fl_vec_push(&b->split, &x, 1)) return -1;
+    double e = b->err[v];
+    for (uint32_t t = first; t < end; t++) {
+        double r = ((double *)b->rad.data)[t];
+        if (!(e >= r)) e = r;
+    }
+    b->err_parent[u] = b->err[v];
+    b->err[v] = e;
+    fl_collapse_split *s = b->split.data;
+    if (b->last[u] != FL_COLLAPSE_NONE) s[b->last[u]].next = k;
+    if (b->last[v] != FL_COLLAPSE_NONE) s[b->last[v]].next = k;
+    b->last[v] = k;
+    return 0;
 }
 
 /* Collapses u into v: consumes u's triangles, makes the new ones (u replaced by v) and hands
@@ -298,6 +327,7 @@ static int collapse(builder *b, uint32_t u, uint32_t v, const ring *ru, double s
             f = next;
         }
     }
+    if (record_errors(b, k, u, v, first, end)) return -1;
     b->chead[u] = FL_COLLAPSE_NONE;
     for (uint32_t t = first; t < end; t++)
         for (int c = 0; c < 3; c++)
@@ -398,8 +428,13 @@ static void builder_free(builder *b)
     fl_vec_free(&b->old);
     fl_vec_free(&b->old_start);
     fl_vec_free(&b->new_start);
+    fl_vec_free(&b->rad);
+    fl_vec_free(&b->split);
     free(b->chead);
     free(b->fnext);
+    free(b->err);
+    free(b->err_parent);
+    free(b->last);
 }
 
 /* The input triangles (each owning itself) and every input edge as a candidate. */
@@ -413,14 +448,20 @@ static int builder_start(builder *b, const fl_mesh *m)
     fl_vec_init(&b->old, sizeof(uint32_t));
     fl_vec_init(&b->old_start, sizeof(uint32_t));
     fl_vec_init(&b->new_start, sizeof(uint32_t));
+    fl_vec_init(&b->rad, sizeof(double));
+    fl_vec_init(&b->split, sizeof(fl_collapse_split));
     b->m = m;
-    b->chead = fl_alloc_array(m->vertex_count ? m->vertex_count : 1, sizeof *b->chead);
+    size_t nv = m->vertex_count ? m->vertex_count : 1;
+    b->chead = fl_alloc_array(nv, sizeof *b->chead);
     b->fnext = fl_alloc_array(m->triangle_count, sizeof *b->fnext);
-    if (!b->chead || !b->fnext || fl_vec_reserve(&b->tris, 3 * m->triangle_count) ||
+    b->err = calloc(nv, sizeof *b->err);
+    b->err_parent = calloc(nv, sizeof *b->err_parent);
+    b->last = fl_alloc_array(nv, sizeof *b->last);
+    if (!b->chead || !b->fnext || !b->err || !b->err_parent || !b->last ||fl_vec_reserve(&b->tris, 3 * m->triangle_count) ||
         fl_vec_reserve(&b->edges, 3 * m->triangle_count))
         return -1;
     for (size_t v = 0; v < m->vertex_count; v++)
-        b->chead[v] = FL_COLLAPSE_NONE;
+        b->chead[v] = b->last[v] = FL_COLLAPSE_NONE;
     for (size_t t = 0; t < m->triangle_count; t++) {
         if (tri_add(b, m->tri + 3 * t, FL_COLLAPSE_NONE)) return -1;
         *u32_at(&b->fhead, t) = (uint32_t)t;
@@ -446,11 +487,16 @@ static int builder_finish(builder *b, fl_sweep_collapse *h)
     h->old = fl_vec_release(&b->old);
     h->old_start = fl_vec_release(&b->old_start);
     h->new_start = fl_vec_release(&b->new_start);
+    h->split = fl_vec_release(&b->split);
+    h->err_self = b->err, b->err = NULL; /* a contracted vertex's error stops changing */
+    h->err_parent = b->err_parent, b->err_parent = NULL;
     size_t base = 0;
     for (size_t t = 0; t < h->tri_count; t++)
         base += h->tri[t].destroyer == FL_COLLAPSE_NONE;
     h->base = fl_alloc_array(base, sizeof *h->base);
-    if (!h->tri || !h->old_start || !h->new_start || !h->base) return -1;
+    if (!h->tri || !h->old_start || !h->new_start || !h->base ||
+        (h->split_count && !h->split))
+        return -1;
     for (size_t t = 0; t < h->tri_count; t++)
         if (h->tri[t].destroyer == FL_COLLAPSE_NONE) h->base[h->base_count++] = (uint32_t)t;
     return 0;
@@ -498,6 +544,9 @@ void fl_sweep_collapse_free(fl_sweep_collapse *h)
     free(h->old_start);
     free(h->old);
     free(h->base);
+    free(h->split);
+    free(h->err_self);
+    free(h->err_parent);
     free(h);
 }
 
@@ -505,5 +554,6 @@ size_t fl_collapse_bytes(const fl_sweep_collapse *h)
 {
     return sizeof *h + 3 * h->vertex_count * sizeof(double) + h->tri_count * sizeof *h->tri +
            2 * (h->split_count + 1) * sizeof(uint32_t) +
-           h->old_start[h->split_count] * sizeof(uint32_t) + h->base_count * sizeof(uint32_t);
+           h->old_start[h->split_count] * sizeof(uint32_t) + h->base_count * sizeof(uint32_t) +
+           h->split_count * sizeof *h->split + 2 * h->vertex_count * sizeof(double);
 }

@@ -13,15 +13,32 @@
  * destroyers: the "split before" dependencies, which point to later collapses only, so they
  * form a DAG (Fig. 5).
  *
- * The bound invariant (what makes the priority process exact). Each fine triangle f is owned
- * by exactly one triangle of every valid current mesh: by f itself if present, otherwise the
- * owner chosen when the collapse that consumed its previous owner ran. `radius[t]` is at least
- * the distance of every vertex of every fine triangle owned by t to the triangle t (measured,
- * widened for rounding). The set of points within radius[t] of t is convex, so it contains
- * those fine triangles whole: d(q, t) - radius[t] is a lower bound of the distance from q to
- * every fine triangle t stands for. Every current mesh's owned sets partition the fine mesh,
- * so the smallest such bound over the current mesh is a lower bound of the distance to the
- * input (tests/sweep/test_collapse_tables.c samples it densely). */
+ * The bounds: two errors per vertex (§4.2 "vertex error"). The paper's ε of a triangle is the
+ * largest sphere radius (error) at its corners. Here: every fine triangle f is owned by exactly
+ * one triangle of every valid current mesh (by f itself if present, otherwise the owner chosen
+ * when the collapse that consumed its previous owner ran); r(t), the largest distance of a
+ * vertex of a fine triangle owned by t to t (widened for rounding), is what t's swept sphere
+ * must reach. Collapse k (u -> v) raises the error of v, and only of v, to
+ *     e_after = max(e_before(v), r(t) for t among k's new triangles),
+ * so errors only grow along the collapse sequence. The fixed tables keep the paper's two
+ * errors per vertex u: err_self[u] (u's error when it was contracted; for a base vertex, its
+ * final error) and err_parent[u] (the parent's error before contracting u). A cursor keeps the
+ * current error of every vertex (one double): splitting k sets cur[u] = err_self[u] and
+ * cur[v] = err_parent[u]; a reset to the base mesh sets cur = err_self.
+ *
+ * Why ε(t) = max(cur at t's corners) bounds t's owned fine triangles (t coarse, made by
+ * collapse k into v): the collapses involving v (into v, then v's own contraction) form a
+ * chain, and split k also needs the next collapse of v's chain split first (`next[k]`, an
+ * extra "split before" edge). So the collapses into v still in effect are a prefix of v's
+ * chain and cur[v] is the error after the last of them, >= e_after of k (errors grow), >= r(t)
+ * while t is present (k in effect). Hence ε(t) >= r(t); the set of points within ε(t) of t is
+ * convex, contains the owned fine triangles' vertices, so contains them whole: d(q,t) - ε(t)
+ * is a lower bound of the distance to every fine triangle t stands for, and the owned sets of
+ * a current mesh partition the input. The same chain gives cur[u] = err_self[u] at u's split
+ * (every collapse into u precedes u's own in the chain, hence is still in effect). Fine
+ * triangles are exact leaves (ε = 0). tests/sweep/test_collapse_tables.c samples it densely.
+ * Errors that drop when a split runs only make the kept keys of neighbour triangles
+ * conservative; dirty entries pick up the smaller error when recomputed. */
 #ifndef FL_SWEEP_COLLAPSE_INTERNAL_H
 #define FL_SWEEP_COLLAPSE_INTERNAL_H
 
@@ -32,14 +49,19 @@
 
 #define FL_COLLAPSE_NONE UINT32_MAX
 
-/* One triangle of the hierarchy (32 bytes). */
+/* One triangle of the hierarchy (24 bytes). */
 typedef struct fl_collapse_tri {
     uint32_t v[3];      /* vertex indices into the input vertices (positions never move) */
     uint32_t rep;       /* a vertex of a fine triangle owned by t (upper bounds); NONE if none */
     uint32_t creator;   /* the collapse that made t; NONE for a fine triangle */
     uint32_t destroyer; /* the collapse that consumed t; NONE for a base-mesh triangle */
-    double radius;      /* the bound radius of the invariant above (0 for fine triangles) */
 } fl_collapse_tri;
+
+/* One vertex split (undoing the half-edge collapse u -> v) and its chain successor. */
+typedef struct fl_collapse_split {
+    uint32_t u, v;
+    uint32_t next; /* the next collapse of v's chain (into v, or v's own), or NONE */
+} fl_collapse_split;
 
 struct fl_sweep_collapse {
     size_t vertex_count;
@@ -54,6 +76,9 @@ struct fl_sweep_collapse {
     uint32_t *old;       /* the triangles each collapse consumed */
     size_t base_count;
     uint32_t *base; /* the base mesh: triangles never consumed */
+    fl_collapse_split *split; /* split_count entries */
+    double *err_self;   /* per vertex: its error when contracted (base vertices: final) */
+    double *err_parent; /* per vertex: its parent's error before contracting it (0 if none) */
 };
 
 /* Whether triangle t is in the current mesh given the done splits (see above). */
@@ -62,6 +87,38 @@ static inline int fl_collapse_present(const fl_sweep_collapse *h, const uint8_t 
     const fl_collapse_tri *x = h->tri + t;
     return (x->creator == FL_COLLAPSE_NONE || !done[x->creator]) &&
            (x->destroyer == FL_COLLAPSE_NONE || done[x->destroyer]);
+}
+
+/* The bound radius ε of triangle t given the current vertex errors (see above). */
+static inline double fl_collapse_eps(const fl_sweep_collapse *h, const double *cur, uint32_t t)
+{
+    if (t < h->fine_count) return 0;
+    const uint32_t *v = h->tri[t].v;
+    double a = cur[v[0]], b = cur[v[1]], c = cur[v[2]];
+    return a > b ? (a > c ? a : c) : (b > c ? b : c);
+}
+
+/* Restores the two vertex errors split k changes (§4.3 "restore the vertex errors"). */
+static inline void fl_collapse_split_errors(const fl_sweep_collapse *h, double *cur, uint32_t k)
+{
+    uint32_t u = h->split[k].u;
+    cur[h->split[k].v] = h->err_parent[u];
+    cur[u] = h->err_self[u];
+}
+
+/* A split of k's "split before" set not done yet, or NONE: the destroyers of k's new
+ * triangles (each present only once its destroyer's split ran) and the next collapse of the
+ * parent's chain (so that the parent's error is restored in order). */
+static inline uint32_t fl_collapse_pending(const fl_sweep_collapse *h, const uint8_t *done,
+                                           uint32_t k)
+{
+    uint32_t n = h->split[k].next;
+    if (n != FL_COLLAPSE_NONE && !done[n]) return n;
+    for (uint32_t t = h->new_start[k]; t < h->new_start[k + 1]; t++) {
+        uint32_t d = h->tri[t].destroyer;
+        if (d != FL_COLLAPSE_NONE && !done[d]) return d;
+    }
+    return FL_COLLAPSE_NONE;
 }
 
 /* Bytes held by the hierarchy (the fixed tables). */

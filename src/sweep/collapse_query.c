@@ -2,7 +2,8 @@
  * §3.2 and the coherence of §5.1): selective refinement of the base mesh by vertex splits.
  *
  * The queue holds the triangles of the current (partly refined) mesh keyed by their lower
- * bound d - radius (collapse_internal.h: they cover the input). The front triangle is
+ * bound d - ε, ε the largest current error at its corners (collapse_internal.h: they cover
+ * the input). The front triangle is
  * refined: the split of its creator runs, after the splits it depends on ("split before",
  * performed in a topological order by a depth-first walk of the dependency DAG); the split
  * replaces its new triangles by the consumed ones, which enter the queue. Triangles a split
@@ -33,6 +34,9 @@ struct fl_sweep_collapse_cursor {
     const fl_sweep_collapse *h;
     fl_sweep_heap heap;
     uint8_t *done;      /* per split */
+    double *cur;        /* per vertex: its current error (collapse_internal.h) */
+    double *key;        /* per hierarchy triangle: its last key (valid once queued) */
+    int groups;         /* lazy splits queue one group entry (split_run) */
     uint32_t *done_list; /* the done splits, to undo them on a reset */
     size_t done_count;
     uint32_t *stack; /* the dependency walk */
@@ -41,6 +45,10 @@ struct fl_sweep_collapse_cursor {
     double last_distance;
     size_t reset_cost, last_cost;
     int started;
+    fl_vec stash; /* fl_sweep_entry: input triangles popped by a k-nearest / within query */
+    int have_ball;    /* §3.3: the last exact answer's ball is valid */
+    double ball_r;    /* around q: within it, ball_leaf stays the closest */
+    uint32_t ball_leaf;
 };
 
 typedef struct query_state {
@@ -50,6 +58,7 @@ typedef struct query_state {
     uint32_t best;   /* nearest input triangle evaluated, for early stops */
     double best_d;
     size_t visited;
+    int want_upper; /* only tolerance queries use upper bounds (§3.2 early stop) */
 } query_state;
 
 static const double *vtx(const fl_sweep_collapse *h, uint32_t v)
@@ -66,8 +75,8 @@ static double tri_distance(const fl_sweep_collapse *h, uint32_t t, const double 
 }
 
 /* Computes triangle t's bounds at the current query and queues it (clean). The upper bound of
- * a coarse triangle is the distance to a vertex of an input triangle it stands for: d + radius
- * would need the triangle to lie within its radius of the input too, which the ownership does
+ * a coarse triangle is the distance to a vertex of an input triangle it stands for: d + ε
+ * would need the triangle to lie within ε of the input too, which the ownership does
  * not promise (docs/sweep.md). */
 static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
 {
@@ -77,9 +86,9 @@ static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
     double d = tri_distance(h, t, st->q, bary, p), lo = d, hi = d;
     st->visited++;
     if (x->creator != FL_COLLAPSE_NONE) {
-        lo = d - x->radius - st->slack - 16 * DBL_EPSILON * c->travelled;
+        lo = d - fl_collapse_eps(h, c->cur, t) - st->slack - 16 * DBL_EPSILON * c->travelled;
         hi = INFINITY;
-        if (x->rep != FL_COLLAPSE_NONE) {
+        if (st->want_upper && x->rep != FL_COLLAPSE_NONE) {
             const double *r = vtx(h, x->rep);
             hi = sqrt((st->q[0] - r[0]) * (st->q[0] - r[0]) + (st->q[1] - r[1]) * (st->q[1] - r[1]) +
                       (st->q[2] - r[2]) * (st->q[2] - r[2])) +
@@ -90,30 +99,49 @@ static void visit(fl_sweep_collapse_cursor *c, query_state *st, uint32_t t)
         st->best = t;
     }
     if (hi < st->upper) st->upper = hi;
+    c->key[t] = lo + c->travelled;
     fl_sweep_heap_push(&c->heap, (fl_sweep_entry){lo + c->travelled, c->travelled, t, 0});
 }
 
-/* Runs split k: its new triangles leave the mesh (their heap entries go stale), the triangles
- * collapse k consumed come back and are queued. */
-static void split_run(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
+#define LAZY (-1.0) /* the `base` of an entry whose distance is not computed yet (never equal
+                     * to the travelled distance, which is >= 0) */
+
+/* Runs split k: its new triangles leave the mesh (their heap entries go stale), u and v get
+ * their errors before the collapse back, the triangles collapse k consumed come back and are
+ * queued. With `lazy` (a split run only because another one depends on it) their distances
+ * are not computed: they stand for the same input triangles as k's new ones, so the smallest
+ * key among those is a valid lower bound for each of them. They are queued as one entry of
+ * that key, node tri_count + k (a "group"), expanded only if it reaches the front (most never
+ * do); if the node numbers would not fit in 32 bits, one dirty entry each (§5.1's
+ * mechanism) instead. */
+static void split_run(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k, int lazy)
 {
     const fl_sweep_collapse *h = c->h;
+    double key = INFINITY;
+    for (uint32_t t = h->new_start[k]; lazy && t < h->new_start[k + 1]; t++)
+        key = fmin(key, c->key[t]); /* present, hence queued since the last reset */
     c->done[k] = 1;
+    fl_collapse_split_errors(h, c->cur, k);
     c->done_list[c->done_count++] = k;
-    for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++)
-        visit(c, st, h->old[i]);
+    for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++) {
+        uint32_t t = h->old[i];
+        if (!lazy) {
+            visit(c, st, t);
+            continue;
+        }
+        c->key[t] = key;
+        if (!c->groups) fl_sweep_heap_push(&c->heap, (fl_sweep_entry){key, LAZY, t, 0});
+    }
+    if (lazy && c->groups)
+        fl_sweep_heap_push(&c->heap, (fl_sweep_entry){key, LAZY, (uint32_t)h->tri_count + k, 0});
 }
 
-/* A split of k's "split before" set that is not done yet, or NONE: the destroyers of k's new
- * triangles (each present only once its destroyer's split ran). */
-static uint32_t pending_dependency(const fl_sweep_collapse_cursor *c, uint32_t k)
+/* A group entry at the front: its triangles still present are computed and queued. */
+static void expand_group(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
 {
     const fl_sweep_collapse *h = c->h;
-    for (uint32_t t = h->new_start[k]; t < h->new_start[k + 1]; t++) {
-        uint32_t d = h->tri[t].destroyer;
-        if (d != FL_COLLAPSE_NONE && !c->done[d]) return d;
-    }
-    return FL_COLLAPSE_NONE;
+    for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++)
+        if (fl_collapse_present(h, c->done, h->old[i])) visit(c, st, h->old[i]);
 }
 
 /* Runs split k after the splits it needs, in a topological order of the dependency DAG (a
@@ -129,20 +157,25 @@ static void refine(fl_sweep_collapse_cursor *c, query_state *st, uint32_t k)
             top--;
             continue;
         }
-        uint32_t d = pending_dependency(c, j);
+        uint32_t d = fl_collapse_pending(c->h, c->done, j);
         if (d != FL_COLLAPSE_NONE) {
             c->stack[top++] = d;
             continue;
         }
         top--;
-        split_run(c, st, j);
+        split_run(c, st, j, j != k);
     }
 }
 
 static void reset_to_base(fl_sweep_collapse_cursor *c, query_state *st)
 {
-    for (size_t i = 0; i < c->done_count; i++)
+    const fl_sweep_collapse *h = c->h;
+    for (size_t i = 0; i < c->done_count; i++) {
+        const fl_collapse_split *x = h->split + c->done_list[i];
         c->done[c->done_list[i]] = 0;
+        c->cur[x->u] = h->err_self[x->u];
+        c->cur[x->v] = h->err_self[x->v];
+    }
     c->done_count = 0;
     c->heap.n = 0;
     c->travelled = 0;
@@ -162,6 +195,7 @@ static void advance(fl_sweep_collapse_cursor *c, query_state *st)
     int reset = !c->started || !(move <= c->last_distance) || c->last_cost > c->reset_cost ||
                 c->heap.n > 8 * c->reset_cost + 64 + c->h->base_count;
     memcpy(c->q, st->q, sizeof c->q);
+    c->have_ball = 0;
     if (reset) {
         reset_to_base(c, st);
     } else {
@@ -193,42 +227,129 @@ static void answer_interval(const fl_sweep_collapse *h, const query_state *st, d
     r->exact = 0;
 }
 
-static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double tol,
-                           fl_closest *r)
+/* Starts a query at q3: the rounding slack and the §5.1 bookkeeping. */
+static void query_begin(fl_sweep_collapse_cursor *c, query_state *st, const double *q3,
+                        int want_upper)
+{
+    *st = (query_state){{q3[0], q3[1], q3[2]}, 0, INFINITY, FL_COLLAPSE_NONE, INFINITY, 0,
+                        want_upper};
+    double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
+    st->slack = 64 * DBL_EPSILON * (c->h->scale + m);
+    advance(c, st);
+}
+
+static void query_end(fl_sweep_collapse_cursor *c, const query_state *st, double distance)
+{
+    if (c->reset_cost == SIZE_MAX) c->reset_cost = st->visited;
+    c->last_cost = st->visited;
+    c->last_distance = distance;
+}
+
+#define FRONT_NONE FL_COLLAPSE_NONE       /* queue empty or front beyond the limit */
+#define FRONT_TOLERANCE (FL_COLLAPSE_NONE - 1) /* the tolerance interval closed (§3.2) */
+
+/* The priority process (§3.2, §4.3): refines the front triangle until a clean, present input
+ * triangle is at the front and returns it (left queued, its exact distance is its key), or
+ * FRONT_NONE once the front's lower bound exceeds `limit` (or the queue is empty), or
+ * FRONT_TOLERANCE when tol > 0 and the best upper bound is within tol of the front's lower
+ * bound. *lower gets the front's lower bound. */
+static uint32_t front_leaf(fl_sweep_collapse_cursor *c, query_state *st, double limit, double tol,
+                           double *lower)
 {
     const fl_sweep_collapse *h = c->h;
-    query_state st = {{q3[0], q3[1], q3[2]}, 0, INFINITY, FL_COLLAPSE_NONE, INFINITY, 0};
-    double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
-    st.slack = 64 * DBL_EPSILON * (h->scale + m);
-    advance(c, &st);
+    *lower = INFINITY;
     while (c->heap.n > 0) {
         fl_sweep_entry top = c->heap.e[0];
+        if (top.node >= h->tri_count) {
+            fl_sweep_heap_pop(&c->heap);
+            expand_group(c, st, top.node - (uint32_t)h->tri_count);
+            continue;
+        }
         if (!fl_collapse_present(h, c->done, top.node)) { /* removed by a split */
             fl_sweep_heap_pop(&c->heap);
             continue;
         }
         if (top.base != c->travelled) { /* dirty (§5.1): recompute at this query */
             fl_sweep_heap_pop(&c->heap);
-            visit(c, &st, top.node);
+            visit(c, st, top.node);
             continue;
         }
-        if (top.node < h->fine_count) {
-            answer_exact(h, top.node, st.q, r);
-            break;
-        }
-        double lower = top.key - c->travelled;
-        if (tol > 0 && st.upper - lower <= tol) {
-            answer_interval(h, &st, lower, r);
-            break;
-        }
+        *lower = top.key - c->travelled;
+        if (!(*lower <= limit)) return FRONT_NONE;
+        if (top.node < h->fine_count) return top.node;
+        if (tol > 0 && st->upper - *lower <= tol) return FRONT_TOLERANCE;
         fl_sweep_heap_pop(&c->heap);
-        refine(c, &st, h->tri[top.node].creator);
+        refine(c, st, h->tri[top.node].creator);
     }
-    if (c->reset_cost == SIZE_MAX) c->reset_cost = st.visited;
-    c->last_cost = st.visited;
-    c->last_distance = r->distance;
+    return FRONT_NONE;
+}
+
+/* §3.3 after an exact answer t at distance d (t at the heap's front): every other present
+ * triangle is in the heap (with stale ones, whose keys only make this smaller) with a lower
+ * bound >= the smaller key at positions 1 and 2, the second interval's lower end. A query
+ * moved by less than half the gap keeps t as its closest triangle. */
+static void set_ball(fl_sweep_collapse_cursor *c, const query_state *st, uint32_t t, double d)
+{
+    double second = INFINITY;
+    for (size_t i = 1; i <= 2 && i < c->heap.n; i++)
+        second = fmin(second, c->heap.e[i].key - c->travelled);
+    double r = (second - d) / 2 - 2 * st->slack - 16 * DBL_EPSILON * c->travelled;
+    c->have_ball = r > 0;
+    c->ball_r = r;
+    c->ball_leaf = t;
+}
+
+static void collapse_query(fl_sweep_collapse_cursor *c, const double *q3, double tol,
+                           fl_closest *r)
+{
+    query_state st;
+    query_begin(c, &st, q3, tol > 0);
+    double lower;
+    uint32_t t = front_leaf(c, &st, INFINITY, tol, &lower);
+    if (t == FRONT_TOLERANCE || t == FRONT_NONE) {
+        answer_interval(c->h, &st, lower, r);
+    } else { /* (the base mesh covers a non-empty input: the queue never runs dry) */
+        answer_exact(c->h, t, st.q, r);
+        set_ball(c, &st, t, r->distance);
+    }
+    query_end(c, &st, r->distance);
     r->reused = 0;
     r->visited = st.visited;
+}
+
+/* §4.4: continues the priority process past the first leaf. Input triangles leave the front in
+ * the order of their distances; each is reported through `emit` (which returns nonzero to
+ * stop) while its distance is <= radius, then all of them are queued again, so the cursor's
+ * queue still covers the input (§5.1). Returns -1 when out of memory. */
+typedef int (*emit_fn)(void *user, uint32_t element, double distance);
+
+static int collapse_ordered(fl_sweep_collapse_cursor *c, const double *q3, double radius,
+                            emit_fn emit, void *user)
+{
+    query_state st;
+    query_begin(c, &st, q3, 0);
+    /* the keys of leaves are d + travelled in floating point: leaves a little beyond radius
+     * are popped too (and not reported) so that none at distance <= radius is missed */
+    double limit = radius + st.slack + 4 * DBL_EPSILON * c->travelled, lower, first = -1;
+    int status = 0;
+    c->stash.count = 0;
+    for (;;) {
+        uint32_t t = front_leaf(c, &st, limit, 0, &lower);
+        if (t == FRONT_NONE) break;
+        fl_sweep_entry x = fl_sweep_heap_pop(&c->heap);
+        if (fl_vec_push(&c->stash, &x, 1)) {
+            fl_sweep_heap_push(&c->heap, x);
+            status = -1;
+            break;
+        }
+        double bary[3], p[3], d = tri_distance(c->h, t, st.q, bary, p);
+        if (first < 0) first = d;
+        if (d <= radius && emit(user, t, d)) break;
+    }
+    for (size_t i = 0; i < c->stash.count; i++)
+        fl_sweep_heap_push(&c->heap, ((fl_sweep_entry *)c->stash.data)[i]);
+    query_end(c, &st, first >= 0 ? first : fmax(0, lower < INFINITY ? lower : 0));
+    return status;
 }
 
 fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
@@ -241,12 +362,22 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
     size_t ns = hierarchy->split_count ? hierarchy->split_count : 1;
     if (c) {
         c->h = hierarchy;
-        c->heap.e = fl_alloc_array(hierarchy->tri_count, sizeof *c->heap.e);
+        fl_vec_init(&c->stash, sizeof(fl_sweep_entry));
+        /* every triangle at most once, plus one group entry per split */
+        c->groups = hierarchy->tri_count + hierarchy->split_count < UINT32_MAX;
+        c->heap.e = fl_alloc_array(hierarchy->tri_count + hierarchy->split_count,
+                                   sizeof *c->heap.e);
+        c->key = fl_alloc_array(hierarchy->tri_count, sizeof *c->key);
         c->done = calloc(ns, 1);
         c->done_list = fl_alloc_array(ns, sizeof *c->done_list);
         c->stack = fl_alloc_array(ns, sizeof *c->stack);
+        c->cur = fl_alloc_array(hierarchy->vertex_count ? hierarchy->vertex_count : 1,
+                                sizeof *c->cur);
+        if (c->cur)
+            memcpy(c->cur, hierarchy->err_self, hierarchy->vertex_count * sizeof *c->cur);
     }
-    if (!c || !c->heap.e || !c->done || !c->done_list || !c->stack) {
+    if (!c || !c->heap.e || !c->done || !c->done_list || !c->stack || !c->cur ||
+        !c->key) {
         fl_sweep_collapse_cursor_free(c);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a collapse cursor");
     }
@@ -261,7 +392,18 @@ void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor)
     free(cursor->done);
     free(cursor->done_list);
     free(cursor->stack);
+    free(cursor->cur);
+    free(cursor->key);
+    fl_vec_free(&cursor->stash);
     free(cursor);
+}
+
+static fl_status check_query(const double *q, fl_error *err)
+{
+    for (int i = 0; i < 3; i++)
+        if (!fl_sweep_coord_ok(q[i]))
+            return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
+    return FL_OK;
 }
 
 fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
@@ -270,11 +412,115 @@ fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, con
     if (!cursor || !q || !result)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and result must not be NULL");
     if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
-    for (int i = 0; i < 3; i++)
-        if (!fl_sweep_coord_ok(q[i]))
-            return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
+    fl_status st = check_query(q, err);
+    if (st != FL_OK) return st;
+    if (cursor->have_ball) { /* §3.3: the cursor's state stays that of the ball's centre */
+        double d2 = 0;
+        for (int i = 0; i < 3; i++)
+            d2 += (q[i] - cursor->q[i]) * (q[i] - cursor->q[i]);
+        if (sqrt(d2) < cursor->ball_r) {
+            answer_exact(cursor->h, cursor->ball_leaf, q, result);
+            result->reused = 1;
+            result->visited = 1;
+            return FL_OK;
+        }
+    }
     collapse_query(cursor, q, tolerance, result);
     return FL_OK;
+}
+
+typedef struct knearest_out {
+    uint32_t *element;
+    double *distance;
+    size_t k, found;
+} knearest_out;
+
+static int emit_knearest(void *user, uint32_t element, double distance)
+{
+    knearest_out *o = user;
+    size_t i = o->found++;
+    o->element[i] = element, o->distance[i] = distance;
+    return o->found >= o->k; /* k > 0 here */
+}
+
+fl_status fl_sweep_collapse_cursor_knearest(fl_sweep_collapse_cursor *cursor, const double *q,
+                                            size_t k, uint32_t *elements, double *distances,
+                                            size_t *found, fl_error *err)
+{
+    if (!cursor || !q || !found || (k > 0 && (!elements || !distances)))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor, query and outputs must not be NULL");
+    *found = 0;
+    fl_status st = check_query(q, err);
+    if (st != FL_OK || k == 0) return st;
+    knearest_out o = {elements, distances, k, 0};
+    if (collapse_ordered(cursor, q, INFINITY, emit_knearest, &o))
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a k-nearest query");
+    *found = o.found;
+    return FL_OK;
+}
+
+typedef struct within_out {
+    fl_vec element, distance;
+    int failed;
+} within_out;
+
+static int emit_within(void *user, uint32_t element, double distance)
+{
+    within_out *o = user;
+    o->failed = fl_vec_push(&o->element, &element, 1) || fl_vec_push(&o->distance, &distance, 1);
+    return o->failed;
+}
+
+fl_status fl_sweep_collapse_cursor_within(fl_sweep_collapse_cursor *cursor, const double *q,
+                                          double radius, fl_sweep_hits *out, fl_error *err)
+{
+    if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "output must not be NULL");
+    *out = (fl_sweep_hits){0, NULL, NULL};
+    if (!cursor || !q) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "cursor and query must not be NULL");
+    if (!(radius >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "radius must be >= 0");
+    fl_status st = check_query(q, err);
+    if (st != FL_OK) return st;
+    within_out o = {.failed = 0};
+    fl_vec_init(&o.element, sizeof(uint32_t));
+    fl_vec_init(&o.distance, sizeof(double));
+    int nomem = collapse_ordered(cursor, q, radius, emit_within, &o) || o.failed;
+    size_t n = o.element.count;
+    if (!nomem && n == 0) { /* a zeroed struct is "no hits"; allocate as fl_sweep_within does */
+        nomem = fl_vec_reserve(&o.element, 1) || fl_vec_reserve(&o.distance, 1);
+    }
+    out->element = fl_vec_release(&o.element);
+    out->distance = fl_vec_release(&o.distance);
+    if (nomem || !out->element || !out->distance) {
+        fl_sweep_hits_free(out);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hits of a query");
+    }
+    out->count = n;
+    return FL_OK;
+}
+
+/* Runs one query through a temporary cursor (the hierarchy itself is never changed). */
+fl_status fl_sweep_collapse_knearest(const fl_sweep_collapse *hierarchy, const double *q, size_t k,
+                                     uint32_t *elements, double *distances, size_t *found,
+                                     fl_error *err)
+{
+    if (found) *found = 0;
+    fl_sweep_collapse_cursor *c;
+    fl_status st = fl_sweep_collapse_cursor_new(hierarchy, &c, err);
+    if (st == FL_OK)
+        st = fl_sweep_collapse_cursor_knearest(c, q, k, elements, distances, found, err);
+    fl_sweep_collapse_cursor_free(c);
+    return st;
+}
+
+fl_status fl_sweep_collapse_within(const fl_sweep_collapse *hierarchy, const double *q,
+                                   double radius, fl_sweep_hits *out, fl_error *err)
+{
+    if (out) *out = (fl_sweep_hits){0, NULL, NULL};
+    fl_sweep_collapse_cursor *c;
+    fl_status st = fl_sweep_collapse_cursor_new(hierarchy, &c, err);
+    if (st == FL_OK) st = fl_sweep_collapse_cursor_within(c, q, radius, out, err);
+    fl_sweep_collapse_cursor_free(c);
+    return st;
 }
 
 fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const double *q, size_t nq,
@@ -303,7 +549,9 @@ fl_status fl_sweep_collapse_info_get(const fl_sweep_collapse *hierarchy,
     info->splits = h->split_count;
     info->triangles = h->tri_count;
     info->bytes = fl_collapse_bytes(h);
-    info->cursor_bytes = sizeof(fl_sweep_collapse_cursor) + h->tri_count * sizeof(fl_sweep_entry) +
-                         ns * (1 + 2 * sizeof(uint32_t));
+    info->cursor_bytes = sizeof(fl_sweep_collapse_cursor) +
+                         (h->tri_count + h->split_count) * sizeof(fl_sweep_entry) +
+                         ns * (1 + 2 * sizeof(uint32_t)) + h->vertex_count * sizeof(double) +
+                         h->tri_count * sizeof(double);
     return FL_OK;
 }

@@ -80,6 +80,38 @@ static void test_messy_random(void)
     cm_free(&m);
 }
 
+/* §3.3 ball: among separated triangles the closest one is unique with a gap to the second,
+ * so repeating a query (and moving it a little) through a cursor is answered from the ball,
+ * exactly, with one distance; a far jump is not. */
+static void test_ball(void)
+{
+    fl_mesh m = cm_soup(60, 0.05);
+    fl_sweep_collapse *h = build(&m);
+    fl_sweep_collapse_cursor *c = NULL;
+    fl_error err = {0};
+    CHECK_STATUS(fl_sweep_collapse_cursor_new(h, &c, &err), FL_OK, &err);
+    if (!c) return;
+    size_t reused = 0;
+    for (int i = 0; i < 40; i++) {
+        double q[3];
+        random_queries(&m, q, 1);
+        fl_closest r;
+        CHECK_STATUS(fl_sweep_collapse_cursor_closest(c, q, 0.0, &r, &err), FL_OK, &err);
+        check_exact(&m, q, &r);
+        CHECK(r.reused == 0);
+        q[0] += 1e-9;
+        CHECK_STATUS(fl_sweep_collapse_cursor_closest(c, q, 0.0, &r, &err), FL_OK, &err);
+        check_exact(&m, q, &r);
+        reused += r.reused;
+        CHECK(!r.reused || r.visited == 1);
+    }
+    printf("  %zu of 40 nudged queries from the ball\n", reused);
+    CHECK(reused >= 36);
+    fl_sweep_collapse_cursor_free(c);
+    fl_sweep_collapse_free(h);
+    cm_free(&m);
+}
+
 static void test_soup_random(void)
 {
     fl_mesh m = cm_soup(200, 0.05);
@@ -101,7 +133,7 @@ static void test_coherent_walk(void)
     fl_error err = {0};
     CHECK_STATUS(fl_sweep_collapse_cursor_new(h, &c, &err), FL_OK, &err);
     double p[3] = {1.2, 0.1, 0.05}, dir[3] = {0, 0, 0};
-    size_t walk_cost = 0, fresh_cost = 0;
+    size_t walk_cost = 0, fresh_cost = 0, reused = 0;
     for (int i = 0; i < 400; i++) {
         for (int k = 0; k < 3; k++) {
             dir[k] = 0.9 * dir[k] + cm_rand(-0.003, 0.003);
@@ -111,6 +143,8 @@ static void test_coherent_walk(void)
         CHECK_STATUS(fl_sweep_collapse_cursor_closest(c, p, 0.0, &r, &err), FL_OK, &err);
         check_exact(&m, p, &r);
         walk_cost += r.visited;
+        reused += r.reused;
+        CHECK(!r.reused || r.visited == 1);
         CHECK_STATUS(fl_sweep_collapse_closest(h, p, 1, 0.0, &f, &err), FL_OK, &err);
         fresh_cost += f.visited;
         if (i % 50 == 49) { /* a tolerance query in between must bracket the distance */
@@ -120,8 +154,8 @@ static void test_coherent_walk(void)
             CHECK(r.upper - r.lower <= 1e-2);
         }
     }
-    printf("  walk: %zu distances through the cursor, %zu from the base mesh\n", walk_cost,
-           fresh_cost);
+    printf("  walk: %zu distances through the cursor, %zu from the base mesh, %zu of 400 "
+           "answers from the §3.3 ball\n", walk_cost, fresh_cost, reused);
     CHECK(2 * walk_cost < fresh_cost);
     fl_sweep_collapse_cursor_free(c);
     fl_sweep_collapse_free(h);
@@ -211,5 +245,5 @@ static void test_bad_input(void)
 FL_TEST_MAIN(FL_TEST_CASE(test_closed_random), FL_TEST_CASE(test_open_random),
              FL_TEST_CASE(test_messy_random), FL_TEST_CASE(test_soup_random),
              FL_TEST_CASE(test_coherent_walk), FL_TEST_CASE(test_tolerance),
-             FL_TEST_CASE(test_extreme_scales),
+             FL_TEST_CASE(test_extreme_scales), FL_TEST_CASE(test_ball),
              FL_TEST_CASE(test_bad_input))

@@ -3,9 +3,12 @@
  * contain u, its new ones are those not containing v with u replaced by v); every triangle is
  * made and consumed at most once; the split-before dependencies point to later collapses (so
  * the DAG is acyclic), and refining in any order that respects them only ever replaces
- * present triangles and ends at the input mesh. Bound (collapse_internal.h): in the base mesh
- * and in random partial refinements, every point densely sampled on the input triangles lies
- * within the radius of some present triangle (distances by the independent oracle). */
+ * present triangles and ends at the input mesh; every split's u and v are the collapse's, and
+ * its chain successor is a later collapse into v or of v. Bound (collapse_internal.h, the
+ * paper's two errors per vertex): in the base mesh and in random partial refinements, every
+ * point densely sampled on the input triangles lies within ε = the largest current vertex
+ * error at the corners of some present triangle (distances by the independent oracle; the
+ * current errors follow the split rule of the paper, restored in the walk's order). */
 #include "sweep/collapse_internal.h"
 #include "test_collapse_meshes.h"
 
@@ -63,14 +66,15 @@ static void check_tables(const fl_sweep_collapse *h)
             uint32_t d = h->tri[t].destroyer; /* split-before edges go to later collapses */
             CHECK(d == FL_COLLAPSE_NONE || d > k);
         }
-        uint32_t u = split_u(h, k);
+        uint32_t u = split_u(h, k), n = h->split[k].next;
         CHECK(u != FL_COLLAPSE_NONE);
+        CHECK(u == h->split[k].u);
+        CHECK(n == FL_COLLAPSE_NONE ||
+              (n > k && (h->split[n].v == h->split[k].v || h->split[n].u == h->split[k].v)));
         if (u == FL_COLLAPSE_NONE) continue;
-        /* Some vertex v of the first new triangle replaced u: the new triangles are the
-         * consumed ones without v, in order, with u -> v. */
-        int found = 0;
-        for (int c = 0; c < 3 && !found; c++)
-            found = matches_collapse(h, k, u, h->tri[h->new_start[k]].v[c]);
+        /* The recorded v replaced u: the new triangles are the consumed ones without v, in
+         * order, with u -> v. */
+        int found = matches_collapse(h, k, u, h->split[k].v);
         CHECK_MSG(found, "split %u is not the inverse of a half-edge collapse", k);
     }
     for (size_t t = 0; t < h->tri_count; t++)
@@ -78,24 +82,30 @@ static void check_tables(const fl_sweep_collapse *h)
     free(consumed);
 }
 
-/* Runs split k after its dependencies (recursively: the test's own walk), checking that each
- * split only replaces present triangles. */
-static void run_split(const fl_sweep_collapse *h, uint8_t *done, uint32_t k)
+/* Runs split k after its dependencies (recursively: the test's own walk, chain successor
+ * first), checking that each split only replaces present triangles, and restores u's and v's
+ * errors (cur) as the paper's split does. */
+static void run_split(const fl_sweep_collapse *h, uint8_t *done, double *cur, uint32_t k)
 {
     if (done[k]) return;
+    if (h->split[k].next != FL_COLLAPSE_NONE) run_split(h, done, cur, h->split[k].next);
     for (uint32_t t = h->new_start[k]; t < h->new_start[k + 1]; t++)
-        if (h->tri[t].destroyer != FL_COLLAPSE_NONE) run_split(h, done, h->tri[t].destroyer);
+        if (h->tri[t].destroyer != FL_COLLAPSE_NONE)
+            run_split(h, done, cur, h->tri[t].destroyer);
     for (uint32_t t = h->new_start[k]; t < h->new_start[k + 1]; t++)
         CHECK(fl_collapse_present(h, done, t));
     for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++)
         CHECK(!fl_collapse_present(h, done, h->old[i]));
     done[k] = 1;
+    cur[h->split[k].v] = h->err_parent[h->split[k].u];
+    cur[h->split[k].u] = h->err_self[h->split[k].u];
     for (uint32_t i = h->old_start[k]; i < h->old_start[k + 1]; i++)
         CHECK(fl_collapse_present(h, done, h->old[i]));
 }
 
-/* Every sample point of the input lies within radius of a present triangle. */
-static void check_cover(const fl_mesh *m, const fl_sweep_collapse *h, const uint8_t *done)
+/* Every sample point of the input lies within ε of a present triangle. */
+static void check_cover(const fl_mesh *m, const fl_sweep_collapse *h, const uint8_t *done,
+                        const double *cur)
 {
     uint32_t *present = malloc(h->tri_count * sizeof *present);
     size_t np = 0, bad = 0;
@@ -116,7 +126,7 @@ static void check_cover(const fl_mesh *m, const fl_sweep_collapse *h, const uint
                     ld d = oracle_triangle(p, h->xyz + 3 * (size_t)t->v[0],
                                            h->xyz + 3 * (size_t)t->v[1],
                                            h->xyz + 3 * (size_t)t->v[2]);
-                    covered = d <= t->radius + 1e-14;
+                    covered = d <= fl_collapse_eps(h, cur, present[x]) + 1e-14;
                 }
                 bad += !covered;
             }
@@ -132,20 +142,26 @@ static void check_mesh(const fl_mesh *m)
     if (!h) return;
     check_tables(h);
     uint8_t *done = calloc(h->split_count + 1, 1);
-    check_cover(m, h, done); /* the base mesh */
+    double *cur = malloc((m->vertex_count + 1) * sizeof *cur);
+    memcpy(cur, h->err_self, m->vertex_count * sizeof *cur);
+    check_cover(m, h, done, cur); /* the base mesh */
     size_t rounds = 3;
     for (size_t r = 0; r < rounds && h->split_count; r++) {
         for (size_t i = 0; i < 1 + h->split_count / 12; i++)
-            run_split(h, done, (uint32_t)(fl_test_rand01(&cm_rng) * (double)h->split_count));
-        check_cover(m, h, done);
+            run_split(h, done, cur,
+                      (uint32_t)(fl_test_rand01(&cm_rng) * (double)h->split_count));
+        check_cover(m, h, done, cur);
     }
     for (uint32_t k = 0; k < h->split_count; k++)
-        run_split(h, done, k);
+        run_split(h, done, cur, k);
+    for (size_t v = 0; v < m->vertex_count; v++) /* all split: every error back to 0 */
+        CHECK(cur[v] == 0);
     for (uint32_t t = 0; t < h->tri_count; t++) /* fully refined: exactly the input */
         CHECK(fl_collapse_present(h, done, t) == (t < h->fine_count));
     printf("  %zu input triangles, %zu splits, base %zu\n", m->triangle_count, h->split_count,
            h->base_count);
     free(done);
+    free(cur);
     fl_sweep_collapse_free(h);
 }
 

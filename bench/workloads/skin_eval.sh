@@ -11,9 +11,9 @@
 #
 #   SKIN_EVAL_CASES="cube 0.5 0.35 0.25;hole 4 3 2"   mesh name (cgal/data/meshes/NAME.off)
 #                                                      and its ε values
-#   SKIN_EVAL_SLICE="hole 3 0.5"   also writes $BENCH_DATA/skin_eval_slice_hole_3.svg: the
-#                                  cross-section of ∪B_perp (blue discs) and of the mesh (black)
-#                                  by the plane z = zmin + 0.5 (zmax - zmin)
+#   SKIN_EVAL_SLICE="hole 3 0.45 x"  also writes $BENCH_DATA/skin_eval_slice_hole_3.svg: the
+#                                  cross-sections of ∪B_perp (blue discs) and of the mesh (black)
+#                                  by the plane x = xmin + 0.45 (xmax - xmin)
 set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -24,18 +24,24 @@ meshes=$BENCH_CACHE/cgal/data/meshes
 timeout_s=${SKIN_EVAL_TIMEOUT:-300}
 cases=${SKIN_EVAL_CASES:-"cube 0.5 0.35 0.25;icosahedron 0.4 0.3 0.2;hole 4 3 2;P 1.0 0.8 0.6"}
 
-# slice_svg MESH.off BALLS.txt FRACTION OUT.svg: the cross-sections by a plane z = const.
+# slice_svg MESH.off BALLS.txt FRACTION AXIS OUT.svg: the cross-sections by a plane normal to
+# AXIS (x, y or z) at FRACTION of the mesh's extent along it.
 slice_svg() {
-  awk -v frac="$3" '
+  local ax=2
+  case $4 in x) ax=0 ;; y) ax=1 ;; esac
+  awk -v frac="$3" -v ax=$(( (ax + 1) % 3 )) '
     FNR == 1 { file++ }
     file == 1 && FNR == 1 && $1 == "OFF" { next }
     file == 1 && !nv && NF >= 2 { nv = $1; nf = $2; next }
-    file == 1 && k < nv && NF >= 3 { x[k] = $1; y[k] = $2; z[k] = $3; k++;
-      if (k == 1 || $3 < z0) z0 = $3; if (k == 1 || $3 > z1) z1 = $3;
-      if (k == 1 || $1 < x0) x0 = $1; if (k == 1 || $1 > x1) x1 = $1;
-      if (k == 1 || $2 < y0) y0 = $2; if (k == 1 || $2 > y1) y1 = $2; next }
+    file == 1 && k < nv && NF >= 3 { k += 0; x[k] = $(1 + ax % 3); y[k] = $(1 + (ax + 1) % 3);
+      z[k] = $(1 + (ax + 2) % 3); k++;
+      if (k == 1 || z[k - 1] < z0) z0 = z[k - 1]; if (k == 1 || z[k - 1] > z1) z1 = z[k - 1];
+      if (k == 1 || x[k - 1] < x0) x0 = x[k - 1]; if (k == 1 || x[k - 1] > x1) x1 = x[k - 1];
+      if (k == 1 || y[k - 1] < y0) y0 = y[k - 1]; if (k == 1 || y[k - 1] > y1) y1 = y[k - 1];
+      next }
     file == 1 && k == nv && NF > 3 { face[nfc++] = $0; next }
-    file == 2 { bx[nb] = $1; by[nb] = $2; bz[nb] = $3; br[nb] = $4; nb++ }
+    file == 2 { bx[nb] = $(1 + ax % 3); by[nb] = $(1 + (ax + 1) % 3); bz[nb] = $(1 + (ax + 2) % 3);
+      br[nb] = $4; nb++ }
     END {
       zc = z0 + frac * (z1 - z0); w = x1 - x0; h = y1 - y0; m = 0.05 * (w > h ? w : h);
       s = 800 / (w + 2 * m);
@@ -46,13 +52,14 @@ slice_svg() {
         printf "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\" fill=\"#7fb2e5\"/>\n", \
           (bx[i] - x0 + m) * s, (y1 - by[i] + m) * s, sqrt(br[i] * br[i] - d * d) * s }
       for (f = 0; f < nfc; f++) { n = split(face[f], v, " "); c = 0;
-        for (j = 2; j <= v[1] + 1; j++) { a = v[j]; b = v[j == v[1] + 1 ? 2 : j + 1];
+        for (j = 2; j <= v[1] + 1; j++) { a = v[j]; jn = j + 1; if (j == v[1] + 1) jn = 2;
+          b = v[jn];
           if ((z[a] - zc) * (z[b] - zc) < 0) { t = (zc - z[a]) / (z[b] - z[a]);
             px[c] = x[a] + t * (x[b] - x[a]); py[c] = y[a] + t * (y[b] - y[a]); c++ } }
         if (c == 2) printf "<line x1=\"%.2f\" y1=\"%.2f\" x2=\"%.2f\" y2=\"%.2f\" " \
           "stroke=\"black\" stroke-width=\"1.5\"/>\n", (px[0] - x0 + m) * s, \
           (y1 - py[0] + m) * s, (px[1] - x0 + m) * s, (y1 - py[1] + m) * s }
-      print "</svg>" }' "$1" "$2" >"$4"
+      print "</svg>" }' "$1" "$2" >"$5"
 }
 
 key() { sed -n "s/.*\"$1\":\([^,}]*\).*/\1/p" <<<"$2"; }
@@ -102,10 +109,11 @@ for c in "${list[@]}"; do
 done
 
 if [ -n "${SKIN_EVAL_SLICE:-}" ]; then
-  read -r name eps frac <<<"$SKIN_EVAL_SLICE"
+  read -r name eps frac axis <<<"$SKIN_EVAL_SLICE"
   mkdir -p "$BENCH_DATA"
   balls=$BENCH_DATA/skin_eval_${name}_$eps.txt
-  "$fl" balls "$meshes/$name.off" --epsilon "$eps" -o "$balls" --quiet
-  slice_svg "$meshes/$name.off" "$balls" "${frac:-0.5}" "$BENCH_DATA/skin_eval_slice_${name}_$eps.svg"
+  [ -e "$balls" ] || "$fl" balls "$meshes/$name.off" --epsilon "$eps" -o "$balls" --quiet
+  slice_svg "$meshes/$name.off" "$balls" "${frac:-0.5}" "${axis:-z}" \
+    "$BENCH_DATA/skin_eval_slice_${name}_$eps.svg"
   echo "slice: $BENCH_DATA/skin_eval_slice_${name}_$eps.svg" >&2
 fi

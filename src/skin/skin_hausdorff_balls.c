@@ -136,6 +136,12 @@ fl_status skin_ball_grid_build(const fl_balls *balls, const double lo_in[3],
         double *o = g->xyzr + 4 * g->n++;
         memcpy(o, b, 3 * sizeof(double));
         o[3] = sqrt(b[3]);
+        for (int k = 0; k < 3; k++)
+            if (!(fabs(o[k]) + o[3] <= 1e150)) { /* sphere points are distance queries */
+                skin_ball_grid_free(g);
+                return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                               "skin: ball %zu reaches beyond 1e150", i);
+            }
         g->rmax = fmax(g->rmax, o[3]);
         for (int k = 0; k < 3; k++) {
             lo[k] = fmin(lo[k], b[k] - o[3]);
@@ -147,6 +153,14 @@ fl_status skin_ball_grid_build(const fl_balls *balls, const double lo_in[3],
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: no ball has a positive weight");
     }
     choose_cell(g, lo, hi);
+    /* a grid that does not cover every ball would make "no ball here" wrong (ray exit) */
+    for (int k = 0; k < 3; k++)
+        if (!(isfinite(g->origin[k]) && g->cell > 0 && isfinite(g->cell) &&
+              g->origin[k] + (double)g->dims[k] * g->cell >= hi[k])) {
+            skin_ball_grid_free(g);
+            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                           "skin: the balls and the mesh span too large a range for the grid");
+        }
     fl_status st = fill(g, err);
     if (st != FL_OK) skin_ball_grid_free(g);
     return st;

@@ -6,8 +6,9 @@
 # Tan predict O(A/ε²) balls, so these should stay bounded as ε shrinks), the certified
 # Hausdorff distance of ∂∪B_perp itself (fl_skin_union_hausdorff, precision ε/50) and of the
 # verifying skin mesh of B*, the Euler check (skin mesh vs input), CPU and wall seconds. There is
-# no peer: the ratio column is "-". A case that runs longer than SKIN_EVAL_TIMEOUT seconds
-# (default 300) is reported as not finished.
+# no peer: the ratio column is "-". A case that needs more than SKIN_EVAL_CPU seconds of CPU
+# time (default 120; ulimit -t, so the machine's load does not decide) or SKIN_EVAL_TIMEOUT
+# seconds of wall time (default 1800) is reported as not finished.
 #
 #   SKIN_EVAL_CASES="cube 0.5 0.35 0.25;hole 4 3 2"   mesh name (cgal/data/meshes/NAME.off)
 #                                                      and its ε values
@@ -21,7 +22,8 @@ build=${FL_BENCH_BUILD:-$root/build-bench}
 cmake --build "$build" -j 2 --target flintstone >/dev/null
 fl=$build/flintstone
 meshes=$BENCH_CACHE/cgal/data/meshes
-timeout_s=${SKIN_EVAL_TIMEOUT:-300}
+timeout_s=${SKIN_EVAL_TIMEOUT:-1800}
+cpu_s=${SKIN_EVAL_CPU:-120}
 cases=${SKIN_EVAL_CASES:-"cube 0.5 0.35 0.25;icosahedron 0.4 0.3 0.2;hole 4 3 2;P 1.0 0.8 0.6"}
 
 # slice_svg MESH.off BALLS.txt FRACTION AXIS OUT.svg: the cross-sections by a plane normal to
@@ -78,15 +80,15 @@ for c in "${list[@]}"; do
     wl=skin_eval_${name}_$eps
     tfile=$(mktemp)
     set +e
-    json=$(timeout "$timeout_s" /usr/bin/time -f "%U %e" -o "$tfile" "$fl" balls "$mesh" \
-      --epsilon "$eps" --json 2>/dev/null)
+    json=$(ulimit -t "$cpu_s"; timeout "$timeout_s" /usr/bin/time -f "%U %e" -o "$tfile" \
+      "$fl" balls "$mesh" --epsilon "$eps" --json 2>/dev/null)
     rc=$?
     set -e
     read -r cpu wall <"$tfile" || true
     rm -f "$tfile"
     load=$(cut -d' ' -f1 /proc/loadavg)
-    if [ "$rc" = 124 ]; then
-      echo "ROW|$wl|-|-|-|-|not finished in ${timeout_s} s (genus $genus, area $area); load $load"
+    if [ "$rc" = 124 ] || [ "$rc" -gt 128 ]; then
+      echo "ROW|$wl|-|-|-|-|not finished in ${cpu_s} s CPU / ${timeout_s} s wall (genus $genus, area $area); load $load"
       continue
     fi
     if [ "$rc" != 0 ]; then

@@ -7,7 +7,8 @@
  *    exact distance to the triangles, brute force here; mesh points: their distance to the
  *    union outside it, their largest depth in one ball inside it), and the certified upper
  *    bound is >= them and close to them; for B_perp it is <= ε (Theorem 14 of Cheng & Tan);
- *  - bad input fails with the documented status. */
+ *  - bad input (NULL, negative precision, no positive ball, NaN or huge ball, infinite mesh
+ *    vertex, too many pieces) fails with the documented status. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -230,6 +231,8 @@ static void test_bad_input(void)
     CHECK_STATUS(fl_skin_union_hausdorff(&b, &m, NULL, &r, &err), FL_ERR_INPUT, &err);
     ball[3] = 1;
     ball[0] = NAN;
+    CHECK_STATUS(fl_skin_union_hausdorff(&b, &m, NULL, &r, &err), FL_ERR_INPUT, &err);
+    ball[0] = 1e150; /* the sphere would reach beyond the range distance queries take */
     CHECK_STATUS(fl_skin_union_hausdorff(&b, &m, NULL, &r, &err), FL_ERR_INPUT, &err);
     ball[0] = 0;
     xyz[0] = INFINITY;

@@ -80,19 +80,21 @@ for c in "${list[@]}"; do
     wl=skin_eval_${name}_$eps
     tfile=$(mktemp)
     set +e
+    efile=$(mktemp)
     json=$(ulimit -t "$cpu_s"; timeout "$timeout_s" /usr/bin/time -f "%U %e" -o "$tfile" \
-      "$fl" balls "$mesh" --epsilon "$eps" --json 2>/dev/null)
+      "$fl" balls "$mesh" --epsilon "$eps" --json 2>"$efile")
     rc=$?
     set -e
     read -r cpu wall <"$tfile" || true
-    rm -f "$tfile"
+    why=$(grep -v "^Command" "$efile" | tail -1 | tr '|' '/' || true)
+    rm -f "$tfile" "$efile"
     load=$(cut -d' ' -f1 /proc/loadavg)
     if [ "$rc" = 124 ] || [ "$rc" -gt 128 ]; then
       echo "ROW|$wl|-|-|-|-|not finished in ${cpu_s} s CPU / ${timeout_s} s wall (genus $genus, area $area); load $load"
       continue
     fi
     if [ "$rc" != 0 ]; then
-      echo "ROW|$wl|-|-|-|-|failed (exit $rc: not verified) (genus $genus); load $load"
+      echo "ROW|$wl|-|-|-|-|failed (exit $rc: $why) (genus $genus); load $load"
       continue
     fi
     perp=$(key balls "$json")

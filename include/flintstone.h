@@ -2062,6 +2062,47 @@ fl_status fl_sweep_polyline_update(fl_sweep *sweep, const double *points, fl_err
 
 /* end of sweep_motion */
 
+/* ==== skin_hausdorff ========================================================================= */
+/* (section owned by src/skin; docs/skin.md, "Certified Hausdorff distance of the union")
+ *
+ * The certified Hausdorff distance between the boundary of a union of balls and a closed
+ * triangle mesh (issue #12: ∂∪B_perp against ∂O). Both directed distances are bounded by
+ * branch and bound with 1-Lipschitz distance functions: the union's boundary is covered by
+ * gnomonic (cube-map) patches of every sphere, dropped when they are buried in another ball;
+ * the mesh by 4-split pieces of its triangles. Distances to the mesh come from the Meshsweeper
+ * hierarchy (fl_sweep), distances to the union's boundary from the balls themselves (outside:
+ * min |x - c| - r; inside: the exit of the normal ray from the union, an upper bound). */
+
+/* Options of fl_skin_union_hausdorff; all zero is the default. */
+typedef struct fl_skin_union_hausdorff_options {
+    double precision;  /* refine until upper - lower of each piece is at most this; 0 means
+                        * 1e-3 of the mesh's bounding-box diagonal */
+    size_t max_pieces; /* refuse to evaluate more pieces (FL_ERR_ALGORITHM); 0 means 5e7 */
+    fl_progress_fn progress; /* may be NULL; stage "union hausdorff" */
+    void *progress_user;
+} fl_skin_union_hausdorff_options;
+
+/* What fl_skin_union_hausdorff certified: every interval is [lower, upper]. */
+typedef struct fl_skin_union_hausdorff_result {
+    double hausdorff[2];   /* max of the two directed distances */
+    double from_union[2];  /* sup over x on the union's boundary of d(x, mesh) */
+    double from_mesh[2];   /* sup over y on the mesh of d(y, union's boundary) */
+    size_t pieces;         /* sphere patches and triangle pieces evaluated */
+} fl_skin_union_hausdorff_result;
+
+/* Bounds the Hausdorff distance between the boundary of the union of the balls with positive
+ * weight in balls (xyzw, w the squared radius) and the triangle mesh `mesh` (its triangles as a
+ * surface; normally closed: the inside test of the distance to the union's boundary uses the
+ * triangles' normals only as ray directions, so any orientation is correct, only slower).
+ * FL_ERR_USAGE for NULL arguments or a negative option, FL_ERR_INPUT for no positive ball,
+ * non-finite or huge (> 1e150) coordinates or weights, a mesh fl_sweep_build rejects,
+ * FL_ERR_ALGORITHM when more than max_pieces would be needed or "cancelled", FL_ERR_NOMEM. */
+fl_status fl_skin_union_hausdorff(const fl_balls *balls, const fl_mesh *mesh,
+                                  const fl_skin_union_hausdorff_options *opt,
+                                  fl_skin_union_hausdorff_result *out, fl_error *err);
+
+/* end of skin_hausdorff */
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,6 +1,7 @@
 /* flintstone balls MESH --epsilon E [--t T] [-o BALLS.txt] [--json]
  * A union of balls B_perp approximating a closed polyhedron within epsilon (Cheng & Tan §4-5),
- * verified through the skin of B* (fl_skin_approx_build, docs/skin.md). */
+ * verified through the skin of B* (fl_skin_approx_build) and through the certified Hausdorff
+ * distance of the union's own boundary (fl_skin_union_hausdorff; docs/skin.md). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,7 +22,9 @@ static const char *usage_text =
     "the skin surface of B* (B_perp and the negative orthogonal balls of §6.2) is meshed and its\n"
     "certified Hausdorff distance to MESH must be <= E with the same Euler characteristic;\n"
     "otherwise the construction repeats (3 rounds: a finer skin grid after a wrong Euler\n"
-    "characteristic, smaller balls after a Hausdorff miss), then it fails.\n"
+    "characteristic, smaller balls after a Hausdorff miss), then it fails. Then the\n"
+    "Hausdorff distance between the boundary of the union of B_perp itself and MESH is\n"
+    "certified (to E/50) and must be <= E too (exit 3 otherwise).\n"
     "\n"
     "  --epsilon E  the Hausdorff tolerance (> 0, in the mesh's units)\n"
     "  --t T        shrink factor of the verifying skin in (0, 1), default 0.5\n"
@@ -29,8 +32,10 @@ static const char *usage_text =
     "               (bisect edges, 4-split triangles until covered)\n"
     "  -o FILE      B_perp, one \"x y z r\" line a ball (r the radius)\n"
     "  --json       balls (|B_perp|), boundary_balls (|B|, on the surface), epsilon,\n"
-    "               hausdorff_upper (certified, skin of B* to MESH), euler, euler_input,\n"
-    "               rounds, seconds\n"
+    "               hausdorff_lower / hausdorff_upper (certified, the boundary of the union\n"
+    "               of B_perp to MESH), skin_hausdorff_upper (certified, skin of B* to MESH),\n"
+    "               euler, euler_input (of the skin mesh and MESH), rounds,\n"
+    "               union_seconds (the union's bound), seconds (all)\n"
     "\n"
     "example: flintstone balls cube.off --epsilon 0.5 -o balls.txt --json\n";
 
@@ -121,6 +126,26 @@ int cmd_balls(int argc, char **argv)
                      "balls: not verified after %d rounds (Hausdorff <= %g, Euler %lld vs %lld "
                      "of the input); try a smaller epsilon than %g",
                      ap.rounds, ap.hausdorff[1], ap.euler, ap.euler_input, a.epsilon);
+    /* The union's own boundary (issue #12): certified separately from the skin of B*. */
+    fl_skin_union_hausdorff_result uh;
+    memset(&uh, 0, sizeof uh);
+    double union_seconds = 0;
+    if (st == FL_OK) {
+        double t1 = cli_now();
+        fl_skin_union_hausdorff_options uo = {0};
+        uo.precision = a.epsilon / 50;
+        uo.progress = cli_progress_fn;
+        uo.progress_user = &prog;
+        st = fl_skin_union_hausdorff(&ap.perp, &mesh, &uo, &uh, &err);
+        cli_progress_done(&prog);
+        seconds = cli_now() - t0;
+        union_seconds = cli_now() - t1;
+        if (st == FL_OK && !(uh.hausdorff[1] <= a.epsilon))
+            st = fl_fail(&err, FL_ERR_ALGORITHM, NULL, -1,
+                         "balls: the boundary of the union of B_perp is not certified within "
+                         "%g of the input (Hausdorff in [%g, %g])",
+                         a.epsilon, uh.hausdorff[0], uh.hausdorff[1]);
+    }
     if (st == FL_OK && c.output) st = write_xyzr(c.output, &ap.perp, &err);
     if (st == FL_OK && c.json) {
         cli_json j;
@@ -128,17 +153,20 @@ int cmd_balls(int argc, char **argv)
         cli_json_uint(&j, "balls", ap.perp.count);
         cli_json_uint(&j, "boundary_balls", ap.surface.count);
         cli_json_double(&j, "epsilon", a.epsilon);
-        cli_json_double(&j, "hausdorff_upper", ap.hausdorff[1]);
+        cli_json_double(&j, "hausdorff_lower", uh.hausdorff[0]);
+        cli_json_double(&j, "hausdorff_upper", uh.hausdorff[1]);
+        cli_json_double(&j, "skin_hausdorff_upper", ap.hausdorff[1]);
         cli_json_int(&j, "euler", ap.euler);
         cli_json_int(&j, "euler_input", ap.euler_input);
         cli_json_int(&j, "rounds", ap.rounds);
+        cli_json_double(&j, "union_seconds", union_seconds);
         cli_json_double(&j, "seconds", seconds);
         cli_json_end(&j);
     } else if (st == FL_OK && !c.quiet) {
         printf("%zu balls (B_perp) from %zu surface balls approximate %s within %g (certified "
-               "Hausdorff <= %g, Euler %lld; %.3f s)\n",
-               ap.perp.count, ap.surface.count, a.mesh, a.epsilon, ap.hausdorff[1], ap.euler,
-               seconds);
+               "Hausdorff <= %g for the union, <= %g for the skin of B*, Euler %lld; %.3f s)\n",
+               ap.perp.count, ap.surface.count, a.mesh, a.epsilon, uh.hausdorff[1],
+               ap.hausdorff[1], ap.euler, seconds);
     }
     fl_skin_approx_free(&ap);
     fl_mesh_free(&mesh);

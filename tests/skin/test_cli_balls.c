@@ -45,6 +45,9 @@ static void test_cli_balls_cube_writes_xyzr_balls_inside(void)
     double h = json_number(r.out, "hausdorff_upper");
     CHECK_MSG(balls > 0 && json_number(r.out, "boundary_balls") > 0, "%s", r.out);
     CHECK_MSG(eps == 0.5 && h > 0 && h <= eps, "%s", r.out);
+    /* hausdorff_* certify the union of B_perp itself, skin_hausdorff_upper the skin of B* */
+    double hl = json_number(r.out, "hausdorff_lower"), hs = json_number(r.out, "skin_hausdorff_upper");
+    CHECK_MSG(hl > 0 && hl <= h && h - hl <= eps / 50 * 1.001 && hs > 0 && hs <= eps, "%s", r.out);
     CHECK_MSG(json_number(r.out, "euler") == 2 && json_number(r.out, "seconds") >= 0, "%s",
               r.out);
     FILE *f = fopen("cli_balls.txt", "r");

@@ -98,7 +98,8 @@ static inline void resolve(const c2_heap *h, c2_entry *e)
 {
     if (!e->lazy) return;
     const double *xy = h->xy;
-    e->key = c2_gamma_indicator(xy + 2 * (size_t)e->a, xy + 2 * (size_t)e->b, xy + 2 * (size_t)e->c);
+    e->key =
+        c2_gamma_indicator(xy + 2 * (size_t)e->a, xy + 2 * (size_t)e->b, xy + 2 * (size_t)e->c);
     e->lazy = 0;
 }
 

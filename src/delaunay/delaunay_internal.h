@@ -44,4 +44,28 @@ fl_status fl_dt_brio_order_in(const double *coords, const uint32_t *ids, size_t 
                               uint32_t *order_out, void *scratch, size_t scratch_bytes,
                               fl_error *err);
 
+/* ==== 2D triangulation in its insertion numbering (for src/reconstruct) ====
+ * fl_dt2_build's triangulation (the same triangles in the same order, the same hull) before its
+ * vertices are mapped back to input indices: vertex r is the r-th distinct point of the BRIO
+ * insertion order, order[r] its input index, xy[2r], xy[2r + 1] its coordinates. Consecutive
+ * ranks are close in the plane, so a caller that walks the triangulation along a front (2D
+ * constriction) gets mostly local memory accesses without gathering the shuffled input a second
+ * time. `order` holds the first input index of each distinct point; duplicate_of is as in
+ * fl_dt2. Free with fl_dt2_ranked_free. Errors as fl_dt2_build (want_circumcenters is ignored). */
+typedef struct fl_dt2_ranked {
+    size_t point_count, unique_count;
+    uint32_t *duplicate_of; /* point_count: as fl_dt2.duplicate_of (input indices) */
+    uint32_t *order;        /* unique_count: rank -> input index */
+    double *xy;             /* 2 per rank */
+    size_t triangle_count;
+    uint32_t *tri, *adj; /* 3 per triangle: ranks, counterclockwise; neighbours or UINT32_MAX */
+    size_t hull_count;
+    uint32_t *hull; /* ranks, counterclockwise, as fl_dt2.hull */
+} fl_dt2_ranked;
+
+fl_status fl_dt2_build_ranked(const double *xy, size_t n, const fl_dt2_options *opt,
+                              fl_dt2_ranked *out, fl_error *err);
+void fl_dt2_ranked_free(fl_dt2_ranked *dt);
+/* end of 2D triangulation in its insertion numbering */
+
 #endif /* FL_DELAUNAY_INTERNAL_H */

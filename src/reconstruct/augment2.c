@@ -220,7 +220,7 @@ int c2_push_graph_candidates(c2_state *s, uint32_t a)
         uint32_t c = g.nb[i];
         if (s->on_boundary[c] || !csr_has(&g, c, b) || !c2_keep_allows(s, a, b, c)) continue;
         if (fl_orient2d(c2_pt(s, a), c2_pt(s, b), c2_pt(s, c)) <= 0) continue;
-        c2_entry e = {c2_key(s, a, b, c, C2_NONE), a, b, c};
+        c2_entry e = {c2_key(s, a, b, c, C2_NONE), a, b, c, 0};
         if (c2_heap_push(&s->heap, e)) return -1;
     }
     return 0;

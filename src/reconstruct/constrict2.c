@@ -17,7 +17,14 @@ int c2_push_candidates(c2_state *s, uint32_t a)
     /* §5.2: removable only when the opposite vertex is not on the boundary yet, so that the
      * new boundary a -> c -> b is again a simple polygon. */
     if (s->on_boundary[c] || !c2_keep_allows(s, a, b, c)) return 0;
-    c2_entry e = {c2_key(s, a, b, c, t), a, b, c};
+    /* A γ-indicator that certainly parks is not computed now (heap2.c): on a closed curve a
+     * third of the keys are those of the thin triangles across the curve, never popped. */
+    c2_entry e = {0, a, b, c, 0};
+    if (s->criterion == FL_RECONSTRUCT2_GAMMA &&
+        c2_gamma_at_least(c2_pt(s, a), c2_pt(s, b), c2_pt(s, c), c2_heap_first_bar()))
+        e.lazy = 1;
+    else
+        e.key = c2_key(s, a, b, c, t);
     return c2_heap_push(&s->heap, e);
 }
 

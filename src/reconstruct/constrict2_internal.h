@@ -15,10 +15,14 @@
 
 #define C2_NONE UINT32_MAX
 
-/* A heap entry: deleting boundary edge a->b (interior on its left) with triangle a b c. */
+/* A heap entry: deleting boundary edge a->b (interior on its left) with triangle a b c.
+ * lazy = 1: the key is not computed yet; it is the γ-indicator of a b c, known to be at least
+ * the heap's first bar (c2_gamma_at_least), so the entry is parked and its key is computed only
+ * if the bar is ever raised past it (heap2.c). */
 typedef struct c2_entry {
     double key;
     uint32_t a, b, c;
+    uint32_t lazy; /* fills the struct's padding: still 24 bytes */
 } c2_entry;
 
 /* The priority queue (heap2.c): pops entries in key order, NaN after every number, ties by the
@@ -33,9 +37,14 @@ typedef struct c2_heap {
     size_t count; /* heaped + parked_count */
     int level;    /* the bar is c2_heap's ladder[level]; past the ladder nothing is parked */
     const uint32_t *orig;
+    const double *xy; /* the points, to compute lazy entries' keys (γ-indicators) */
 } c2_heap;
 
-int c2_heap_push(c2_heap *h, c2_entry e); /* 0, or -1 when out of memory */
+/* 0, or -1 when out of memory. A lazy entry is parked as it is at the first bar; its key is
+ * computed (from xy) when the bar is raised, or at once when the bar has moved already. */
+int c2_heap_push(c2_heap *h, c2_entry e);
+/* The first bar of the ladder: keys at or above it are parked while the bar has not moved. */
+double c2_heap_first_bar(void);
 /* Requires count > 0. 0, or -1 when out of memory (*out unchanged): moving parked entries into
  * the heap may have to grow it. */
 int c2_heap_pop(c2_heap *h, c2_entry *out);
@@ -51,14 +60,15 @@ typedef struct c2_state {
     const double *xy;       /* n points in the internal numbering (see below) */
     size_t n, unique_count; /* internal vertices: n == unique_count */
     size_t n_input;         /* input points, duplicates included */
-    /* Internal numbering: the distinct points renumbered in the order they first appear in the
-     * Delaunay triangles, so that vertices close in the plane are close in memory (the
-     * triangulation lists its triangles in a spatially coherent order). Constriction runs
-     * along a front, and with the input numbering (shuffled points: random) every vertex it
-     * touched was a cache miss in each per-vertex array. Results are mapped back on output;
-     * ties between keys are broken by input indices, so the result does not depend on it. */
+    /* Internal numbering: the Delaunay builder's insertion order (fl_dt2_build_ranked: BRIO
+     * rounds, Hilbert order within a round), so that vertices close in the plane are close in
+     * memory. Constriction runs along a front, and with the input numbering (shuffled points:
+     * random) every vertex it touched was a cache miss in each per-vertex array. The builder
+     * hands over its coordinate copy in that order, so the shuffled input is not gathered a
+     * second time. Results are mapped back on output; ties between keys are broken by input
+     * indices, so the result does not depend on the numbering. */
     uint32_t *orig;   /* n: internal -> input index (the first of its duplicates) */
-    uint32_t *inv;    /* n_input: input index -> internal index */
+    uint32_t *inv;    /* n_input: input index -> internal index; NULL unless edges are kept */
     double *xy_store; /* owned storage behind xy */
     size_t tcount;
     uint32_t *tri, *adj;
@@ -133,6 +143,10 @@ static inline int c2_corner(const c2_state *s, uint32_t t, uint32_t v)
  * neighbours of face t (pass C2_NONE when a b c is not a face yet: the γ-indicator is used). */
 double c2_key(const c2_state *s, uint32_t a, uint32_t b, uint32_t c, uint32_t t);
 double c2_gamma_indicator(const double *a, const double *b, const double *c);
+/* 1 when c2_gamma_indicator(a, b, c) is certainly at least `bar` (0 < bar < 1) — the angle at
+ * c is acute and its sine at most 1 - bar with a wide margin — decided without square roots;
+ * 0 when unsure (the caller then computes the key). */
+int c2_gamma_at_least(const double *a, const double *b, const double *c, double bar);
 
 /* constrict2.c: plain constriction never follows a link from a living triangle to a deleted
  * one: the two neighbours that the deletion of face t (edge a->b on the boundary, apex c not)

@@ -33,6 +33,24 @@ double c2_gamma_indicator(const double *a, const double *b, const double *c)
     return cos_t >= 0 ? 1 - sin_t : sin_t - 1;
 }
 
+/* γ = 1 - sin θ with θ acute (cos θ >= 0), so γ >= bar when sin θ <= 1 - bar: checked as
+ * cross² <= ((1 - bar)² / 2)·|u|²|v|², half the true bound, so the rounding of these few
+ * products (relative 1e-15) cannot turn a "yes" wrong. The squares are only trusted in a range
+ * where they neither overflow nor lose precision to underflow; outside it (and for NaN, where
+ * every comparison is false) the answer is 0. The dot product's sign is the one
+ * c2_gamma_indicator sees: its rescaling by a power of two is exact in this range, and the
+ * dot product is then most of |u||v| (cos² > 1/2), far from its rounding error. */
+int c2_gamma_at_least(const double *a, const double *b, const double *c, double bar)
+{
+    double ux = a[0] - c[0], uy = a[1] - c[1], vx = b[0] - c[0], vy = b[1] - c[1];
+    double dot = ux * vx + uy * vy;
+    if (!(dot > 0)) return 0; /* obtuse (negative key): the common case on the hot path */
+    double lu2 = ux * ux + uy * uy, lv2 = vx * vx + vy * vy, cross = ux * vy - uy * vx;
+    const double lo = 0x1p-400, hi = 0x1p400, s = 1 - bar;
+    if (!(lu2 > lo && lu2 < hi && lv2 > lo && lv2 < hi)) return 0;
+    return cross * cross <= 0.5 * s * s * (lu2 * lv2);
+}
+
 /* Eq. 4.1 in 2D ("face area" is edge length): the two edges that join the boundary minus the
  * one that leaves it, relative to the perimeter; small when the boundary barely moves. */
 static double area_change(const double *a, const double *b, const double *c)

@@ -87,9 +87,26 @@ static int heap_push(c2_heap *h, c2_entry e)
     return 0;
 }
 
+double c2_heap_first_bar(void)
+{
+    return ladder[0];
+}
+
+/* Computes a lazy entry's key as c2_key would (the γ-indicator): bit for bit the value an
+ * eager push would have stored, so the order of pops does not change. */
+static inline void resolve(const c2_heap *h, c2_entry *e)
+{
+    if (!e->lazy) return;
+    const double *xy = h->xy;
+    e->key =
+        c2_gamma_indicator(xy + 2 * (size_t)e->a, xy + 2 * (size_t)e->b, xy + 2 * (size_t)e->c);
+    e->lazy = 0;
+}
+
 int c2_heap_push(c2_heap *h, c2_entry e)
 {
-    if (parks(h, e.key)) {
+    if (h->level > 0) resolve(h, &e);
+    if (e.lazy || parks(h, e.key)) {
         if (reserve(&h->parked, &h->parked_capacity, h->parked_count)) return -1;
         h->parked[h->parked_count++] = e;
     } else if (heap_push(h, e)) {
@@ -108,6 +125,7 @@ static int unpark(c2_heap *h)
         size_t kept = 0;
         for (size_t i = 0; i < h->parked_count; i++) {
             c2_entry e = h->parked[i];
+            resolve(h, &e);
             if (parks(h, e.key)) {
                 h->parked[kept++] = e;
             } else if (heap_push(h, e)) {

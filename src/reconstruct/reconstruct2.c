@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "delaunay/delaunay_internal.h"
 #include "reconstruct/constrict2_internal.h"
 
 static void state_free(c2_state *s)
@@ -45,53 +46,29 @@ int c2_keep_dt(c2_state *s)
     return 0;
 }
 
-enum { PREFETCH = 16 }; /* entries ahead in the renumbering's random-access loops */
-
-static fl_status renumber(c2_state *s, const double *xy, const fl_dt2 *dt, fl_error *err)
+/* inv[] (input index -> internal index, duplicates included), made only when input indices
+ * must be mapped in (kept edges); constriction itself never needs it. */
+static fl_status make_inv(c2_state *s, const fl_dt2_ranked *dt, fl_error *err)
 {
-    size_t n = dt->point_count, u = dt->unique_count, k = 0;
-    s->orig = fl_alloc_array(u, sizeof *s->orig);
-    s->inv = fl_alloc_array(n, sizeof *s->inv);
-    s->xy_store = fl_alloc_array(u, 2 * sizeof *s->xy_store);
-    if (!s->orig || !s->inv || !s->xy_store)
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
-    memset(s->inv, 0xff, n * sizeof *s->inv);
-    int broken = 0; /* more vertices than distinct points */
-    size_t m = 3 * s->tcount;
-    for (size_t i = 0; i < m && !broken; i++) {
-        /* inv[] is indexed by input index (random in memory for shuffled input): ask for the
-         * lines a few entries ahead. */
-        if (i + PREFETCH < m) __builtin_prefetch(&s->inv[s->tri[i + PREFETCH]]);
-        uint32_t v = s->tri[i];
-        if (s->inv[v] == C2_NONE) {
-            if ((broken = k == u)) break;
-            s->inv[v] = (uint32_t)k;
-            s->orig[k++] = v;
-        }
-        s->tri[i] = s->inv[v];
-    }
-    /* Gathered in a loop of its own: independent loads the processor can overlap. */
-    for (size_t j = 0; j < k; j++) {
-        if (j + PREFETCH < k) __builtin_prefetch(&xy[2 * (size_t)s->orig[j + PREFETCH]]);
-        s->xy_store[2 * j] = xy[2 * (size_t)s->orig[j]];
-        s->xy_store[2 * j + 1] = xy[2 * (size_t)s->orig[j] + 1];
-    }
-    if (k != u || broken)
-        return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,
-                       "the Delaunay triangles do not use the %zu distinct points once each", u);
-    for (size_t v = 0; v < n; v++)
-        if (s->inv[v] == C2_NONE) s->inv[v] = s->inv[dt->duplicate_of[v]];
-    s->xy = s->xy_store;
-    s->heap.orig = s->orig;
+    s->inv = fl_alloc_array(s->n_input, sizeof *s->inv);
+    if (!s->inv)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", s->n_input);
+    for (size_t r = 0; r < s->n; r++)
+        s->inv[s->orig[r]] = (uint32_t)r;
+    /* duplicate_of[v] <= v, so the first of its kind is mapped already */
+    for (size_t v = 0; v < s->n_input; v++)
+        if (dt->duplicate_of[v] != v) s->inv[v] = s->inv[dt->duplicate_of[v]];
     return FL_OK;
 }
 
 /* Line 2 of Algorithm 5.1: the boundary of γ([-1,1],[0,1]) is the convex hull. The state takes
- * over the triangulation's triangles and neighbours instead of copying them (the 1e6-point
- * curve spent a tenth of its constriction time in that copy and its page faults); a copy of
- * the triangles is made only if flips are going to change them (c2_keep_dt). */
-static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
-                            fl_reconstruct2_criterion criterion, fl_error *err)
+ * over the triangulation's triangles, neighbours, coordinates and insertion order instead of
+ * copying them (the 1e6-point curve spent a tenth of its constriction time in a copy and its
+ * page faults, and more in gathering the shuffled input into a spatial order the builder had
+ * already made); a copy of the triangles is made only if flips are going to change them
+ * (c2_keep_dt). */
+static fl_status state_init(c2_state *s, fl_dt2_ranked *dt, fl_reconstruct2_criterion criterion,
+                            fl_error *err)
 {
     size_t n = dt->unique_count, tc = dt->triangle_count;
     memset(s, 0, sizeof *s);
@@ -104,9 +81,12 @@ static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
     s->dt_count = tc;
     s->tri = dt->tri;
     s->adj = dt->adj;
-    dt->tri = dt->adj = NULL;
-    fl_status st = renumber(s, xy, dt, err);
-    if (st != FL_OK) return st;
+    s->orig = dt->order;
+    s->xy = s->xy_store = dt->xy;
+    s->heap.orig = s->orig;
+    s->heap.xy = s->xy;
+    dt->tri = dt->adj = dt->order = NULL;
+    dt->xy = NULL;
     s->alive = fl_alloc_array(tc, 1);
     s->on_boundary = fl_calloc_array(n, 1);
     s->bnext = fl_alloc_array(n, sizeof *s->bnext);
@@ -120,18 +100,18 @@ static fl_status state_init(c2_state *s, const double *xy, fl_dt2 *dt,
         for (int k = 0; k < 3; k++)
             if (s->adj[3 * t + k] == C2_NONE) s->btri[s->tri[3 * t + (k + 1) % 3]] = (uint32_t)t;
     for (size_t i = 0; i < dt->hull_count; i++) {
-        uint32_t v = s->inv[dt->hull[i]];
+        uint32_t v = dt->hull[i];
         s->on_boundary[v] = 1;
-        s->bnext[v] = s->inv[dt->hull[(i + 1) % dt->hull_count]];
+        s->bnext[v] = dt->hull[(i + 1) % dt->hull_count];
     }
     s->boundary_count = dt->hull_count;
     return FL_OK;
 }
 
-static fl_status push_hull(c2_state *s, const fl_dt2 *dt, fl_error *err)
+static fl_status push_hull(c2_state *s, const fl_dt2_ranked *dt, fl_error *err)
 {
     for (size_t i = 0; i < dt->hull_count; i++)
-        if (c2_push_candidates(s, s->inv[dt->hull[i]]))
+        if (c2_push_candidates(s, dt->hull[i]))
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the heap");
     return FL_OK;
 }
@@ -171,18 +151,28 @@ static void explain(const c2_state *s, const fl_reconstruct2_options *o, double 
     out->all_on_boundary = 1;
 }
 
-static fl_status extract(const c2_state *s, const fl_dt2 *dt, fl_reconstruction2 *out,
+/* Hands over *buf (room for at least `count` entries) trimmed to `count`; *buf becomes NULL. */
+static uint32_t *take(uint32_t **buf, size_t count)
+{
+    uint32_t *p = *buf, *q = realloc(p, count ? count * sizeof *p : 1);
+    *buf = NULL;
+    return q ? q : p;
+}
+
+/* The result's polygon and triangles go into memory the state no longer needs (btri: one entry
+ * per vertex; adj: three per Delaunay triangle, and the living triangles are a subset): fresh
+ * pages cost a page fault each on first touch, about a tenth of this function's time at 1e6
+ * points. Neither is read from here on (the listing reads bnext, the triangles tri). */
+static fl_status extract(c2_state *s, const fl_dt2_ranked *dt, fl_reconstruction2 *out,
                          fl_error *err)
 {
     size_t live = 0;
     for (size_t t = 0; t < s->tcount; t++)
         live += s->alive[t];
-    out->boundary = fl_alloc_array(s->boundary_count, sizeof *out->boundary);
-    out->tri = fl_alloc_array(3 * live, sizeof *out->tri);
-    if (!out->boundary || !out->tri)
-        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
+    out->boundary = take(&s->btri, s->boundary_count);
+    out->tri = take(&s->adj, 3 * live);
     /* hull vertices never leave the boundary */
-    if (c2_boundary_order(s, s->inv[dt->hull[0]], out->boundary))
+    if (c2_boundary_order(s, dt->hull[0], out->boundary))
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the result");
     double area2 = 0;
     for (size_t i = 0, m = s->boundary_count; i < m; i++) {
@@ -206,14 +196,14 @@ static fl_status extract(const c2_state *s, const fl_dt2 *dt, fl_reconstruction2
 }
 
 static fl_status run(const double *xy, size_t n, const fl_reconstruct2_options *o,
-                     fl_reconstruction2 *out, fl_dt2 *dt, c2_state *s, fl_error *err)
+                     fl_reconstruction2 *out, fl_dt2_ranked *dt, c2_state *s, fl_error *err)
 {
     fl_dt2_options dopt = {o->progress, o->progress_user, 0};
-    fl_status st = fl_dt2_build(xy, n, &dopt, dt, err);
+    fl_status st = fl_dt2_build_ranked(xy, n, &dopt, dt, err);
     if (st != FL_OK) return st;
-    if ((st = state_init(s, xy, dt, o->criterion, err)) != FL_OK) return st;
-    if (o->keep_count &&
-        (st = c2_keep_edges(s, s->inv, o->keep, o->keep_count, err)) != FL_OK)
+    if ((st = state_init(s, dt, o->criterion, err)) != FL_OK) return st;
+    if (o->keep_count && ((st = make_inv(s, dt, err)) != FL_OK ||
+                          (st = c2_keep_edges(s, s->inv, o->keep, o->keep_count, err)) != FL_OK))
         return st;
     if ((st = push_hull(s, dt, err)) != FL_OK) return st;
     if ((st = c2_constrict(s, o->progress, o->progress_user, err)) != FL_OK) return st;
@@ -252,12 +242,12 @@ fl_status fl_reconstruct2(const double *xy, size_t n, const fl_reconstruct2_opti
     if (o.keep_count && !o.keep)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "keep_count is %zu but keep is NULL",
                        o.keep_count);
-    fl_dt2 dt = {0};
+    fl_dt2_ranked dt = {0};
     c2_state s;
     memset(&s, 0, sizeof s);
     fl_status st = run(xy, n, &o, out, &dt, &s, err);
     state_free(&s);
-    fl_dt2_free(&dt);
+    fl_dt2_ranked_free(&dt);
     if (st != FL_OK) fl_reconstruction2_free(out);
     return st;
 }

@@ -168,8 +168,45 @@ static void test_written_polygon_and_mesh_read_back(void)
     free(xy);
 }
 
+/* c2_gamma_at_least (the test that lets constriction park a key without computing it) against
+ * c2_gamma_indicator itself: whenever it says yes, the indicator must be at least the bar —
+ * for triangles at magnitudes from 1e-300 to 1e300, thin and fat, and with NaN or infinite
+ * coordinates (then it must say no). It must also say yes for the thin triangles across a
+ * sampled curve (else it would save nothing). */
+static void test_gamma_at_least_never_claims_a_smaller_indicator(void)
+{
+    unsigned long long st = 2024;
+    size_t wrong = 0, yes = 0;
+    const double bars[] = {0.5, 0.875, 0.25};
+    for (int i = 0; i < 200000; i++) {
+        double u = fl_test_rand01(&st), p[6];
+        double scale = i % 2 ? pow(10, -300 + 600 * u) : pow(10, -100 + 200 * u);
+        for (int k = 0; k < 6; k++)
+            p[k] = (fl_test_rand01(&st) - 0.5) * scale;
+        if (i % 3 == 0) { /* thin: c far from a and b along their line's normal */
+            p[4] = (p[0] + p[2]) / 2 + (p[3] - p[1]) * 40;
+            p[5] = (p[1] + p[3]) / 2 - (p[2] - p[0]) * 40;
+        }
+        if (i % 1000 == 1) p[i % 6] = i % 2000 == 1 ? NAN : HUGE_VAL;
+        double bar = bars[i % 3];
+        if (!c2_gamma_at_least(p, p + 2, p + 4, bar)) continue;
+        yes++;
+        int finite = 1;
+        for (int k = 0; k < 6; k++)
+            finite &= isfinite(p[k]) != 0;
+        wrong += !(c2_gamma_indicator(p, p + 2, p + 4) >= bar) || !finite;
+    }
+    CHECK_EQ_INT(wrong, 0);
+    CHECK(yes > 15000);
+    const double a[] = {0, 0}, b[] = {1e-3, 0}, c[] = {5e-4, 1}; /* across a curve */
+    CHECK(c2_gamma_at_least(a, b, c, 0.5));
+    const double right[] = {5e-4, 5e-4}; /* γ = 0 */
+    CHECK(!c2_gamma_at_least(a, b, right, 0.5));
+}
+
 FL_TEST_MAIN(FL_TEST_CASE(test_gamma_indicator_matches_the_circumradius_definition),
              FL_TEST_CASE(test_gamma_indicator_fast_scaling_is_bit_identical),
              FL_TEST_CASE(test_every_criterion_reconstructs_a_dense_star_in_order),
              FL_TEST_CASE(test_result_is_independent_of_scale_and_quarter_turns),
-             FL_TEST_CASE(test_written_polygon_and_mesh_read_back))
+             FL_TEST_CASE(test_written_polygon_and_mesh_read_back),
+             FL_TEST_CASE(test_gamma_at_least_never_claims_a_smaller_indicator))

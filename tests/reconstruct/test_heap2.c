@@ -3,6 +3,8 @@
  * the interleaving of pushes and pops, every pop must return the least entry still queued in the
  * order the thesis' Algorithm 5.1 relies on (key, then the input indices of a, b, c), so that
  * runs are deterministic and independent of the queue's implementation. */
+#include <string.h>
+
 #include "fl_test.h"
 #include "reconstruct/constrict2_internal.h"
 
@@ -41,7 +43,7 @@ static int same_entry(c2_entry x, c2_entry y)
 
 static c2_entry pop(c2_heap *h)
 {
-    c2_entry e = {NAN, C2_NONE, C2_NONE, C2_NONE};
+    c2_entry e = {NAN, C2_NONE, C2_NONE, C2_NONE, 0};
     CHECK(c2_heap_pop(h, &e) == 0);
     return e;
 }
@@ -54,7 +56,7 @@ static c2_entry random_entry(void)
     static const double keys[] = {-1,   -0.25,    0,      0.125, 0.5, 0.75,      0.875,   0.9,
                                   0.99, 0.984375, 0.9999, 1,     2,   -HUGE_VAL, HUGE_VAL};
     enum { NKEYS = sizeof keys / sizeof *keys };
-    c2_entry e;
+    c2_entry e = {0, 0, 0, 0, 0};
     uint32_t r = next_u32() % 64;
     e.key = r == 0 ? NAN : r < 32 ? keys[r % NKEYS] : (double)(next_u32() % 1000) / 499.5 - 1.0;
     e.a = next_u32() % 8;
@@ -106,7 +108,7 @@ static void test_heap_breaks_ties_by_input_indices_through_orig(void)
     run_against_oracle(orig, 4000);
     c2_heap h = {0};
     h.orig = orig;
-    c2_entry lo = {0.5, 1, 2, 3}, hi = {0.5, 0, 2, 3}; /* orig[1] = 6 < orig[0] = 7 */
+    c2_entry lo = {0.5, 1, 2, 3, 0}, hi = {0.5, 0, 2, 3, 0}; /* orig[1] = 6 < orig[0] = 7 */
     CHECK(c2_heap_push(&h, hi) == 0);
     CHECK(c2_heap_push(&h, lo) == 0);
     CHECK_EQ_INT(pop(&h).a, 1);
@@ -121,7 +123,7 @@ static void test_heap_survives_growth_past_many_levels(void)
     c2_heap h = {0};
     size_t n = 20000, wrong = 0;
     for (size_t i = 0; i < n; i++) {
-        c2_entry e = {(double)(n - i), (uint32_t)i, 0, 0};
+        c2_entry e = {(double)(n - i), (uint32_t)i, 0, 0, 0};
         CHECK(c2_heap_push(&h, e) == 0);
     }
     for (size_t i = 0; i < n; i++)
@@ -141,7 +143,7 @@ static void test_heap_parks_high_keys_and_returns_them_in_order(void)
     size_t n = 5000, wrong = 0;
     double prev = -HUGE_VAL;
     for (size_t i = 0; i < n; i++) {
-        c2_entry e = {1.0 - 2.0 * (double)i / (double)n, (uint32_t)i, 0, 0};
+        c2_entry e = {1.0 - 2.0 * (double)i / (double)n, (uint32_t)i, 0, 0, 0};
         CHECK(c2_heap_push(&h, e) == 0);
         if (i % 3 == 2) {
             c2_entry got = pop(&h);
@@ -154,7 +156,7 @@ static void test_heap_parks_high_keys_and_returns_them_in_order(void)
         prev = got.key;
     }
     CHECK_EQ_INT(wrong, 0);
-    c2_entry hi = {0.999, 1, 0, 0}, lo = {-0.5, 2, 0, 0};
+    c2_entry hi = {0.999, 1, 0, 0, 0}, lo = {-0.5, 2, 0, 0, 0};
     CHECK(c2_heap_push(&h, hi) == 0);
     c2_heap_clear(&h);
     CHECK_EQ_INT(h.count, 0);
@@ -166,6 +168,49 @@ static void test_heap_parks_high_keys_and_returns_them_in_order(void)
     c2_heap_free(&h);
 }
 
+/* Lazily parked keys (lazy entries, computed from the points only when the bar is raised past
+ * them or when pushed after it moved) against the same entries with their γ-indicators
+ * computed up front: the sequence of pops must be the same, entry for entry and key for key.
+ * Apexes on both sides of the first bar, so lazy entries meet eager ones in the heap. */
+static void test_heap_lazy_keys_pop_as_computed_keys(void)
+{
+    enum { NP = 64, OPS = 3000 };
+    double xy[2 * NP];
+    unsigned long long st = 99;
+    for (int i = 0; i < 2 * NP; i++)
+        xy[i] = fl_test_rand01(&st) * (i % 7 == 0 ? 1e-3 : 1.0);
+    c2_heap lazy = {0}, eager = {0};
+    lazy.xy = xy;
+    size_t wrong = 0, pushed_lazy = 0;
+    for (int op = 0; op < OPS; op++) {
+        if (op % 4 == 3 && eager.count > 0) {
+            c2_entry x = pop(&eager), y = pop(&lazy);
+            wrong += x.a != y.a || x.b != y.b || x.c != y.c || memcmp(&x.key, &y.key, 8) != 0;
+            continue;
+        }
+        uint32_t a = next_u32() % NP, b = next_u32() % NP, c = next_u32() % NP;
+        const double *pa = xy + 2 * a, *pb = xy + 2 * b, *pc = xy + 2 * c;
+        double key = c2_gamma_indicator(pa, pb, pc);
+        c2_entry e = {key, a, b, c, 0}, l = e;
+        if (c2_gamma_at_least(pa, pb, pc, c2_heap_first_bar())) {
+            l.key = NAN; /* must not be read */
+            l.lazy = 1;
+            pushed_lazy++;
+        }
+        CHECK(c2_heap_push(&eager, e) == 0);
+        CHECK(c2_heap_push(&lazy, l) == 0);
+    }
+    while (eager.count > 0 && lazy.count > 0) {
+        c2_entry x = pop(&eager), y = pop(&lazy);
+        wrong += x.a != y.a || x.b != y.b || x.c != y.c || memcmp(&x.key, &y.key, 8) != 0;
+    }
+    CHECK(eager.count == 0 && lazy.count == 0);
+    CHECK_EQ_INT(wrong, 0);
+    CHECK(pushed_lazy > 100); /* the test exercised the lazy path */
+    c2_heap_free(&lazy);
+    c2_heap_free(&eager);
+}
+
 int main(void)
 {
     static const fl_test_case cases[] = {
@@ -173,6 +218,7 @@ int main(void)
         FL_TEST_CASE(test_heap_breaks_ties_by_input_indices_through_orig),
         FL_TEST_CASE(test_heap_survives_growth_past_many_levels),
         FL_TEST_CASE(test_heap_parks_high_keys_and_returns_them_in_order),
+        FL_TEST_CASE(test_heap_lazy_keys_pop_as_computed_keys),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

@@ -34,11 +34,12 @@ static size_t count_occurrences(const char *s, const char *what)
 
 static int run_chromium(const char *args, const char *out, const char *log)
 {
-    char cmd[4096];
-    snprintf(cmd, sizeof cmd,
-             "timeout 120 " CHROMIUM " " CHROMIUM_FLAGS " --user-data-dir=%s/profile-%ld %s "
-             ">%s 2>%s",
-             OUT_DIR, (long)getpid(), args, out, log);
+    char cmd[8192];
+    int len = snprintf(cmd, sizeof cmd,
+                       "timeout 120 " CHROMIUM " " CHROMIUM_FLAGS
+                       " --user-data-dir=%s/profile-%ld %s >%s 2>%s",
+                       OUT_DIR, (long)getpid(), args, out, log);
+    if (len < 0 || (size_t)len >= sizeof cmd) return -1; /* a cut command line must not run */
     return system(cmd);
 }
 

@@ -306,18 +306,10 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
  * too often, 4 and more keep too many members). The kept queue is not brought along (that is
  * what makes a step cheap), so the next query through the queue starts from the root. */
 #define WALK_FRACTION 0.5
-#ifndef WALK_REACH
 #define WALK_REACH 2.0
-#endif
-#ifndef WALK_REACH_MAX
 #define WALK_REACH_MAX 64.0
-#endif
-#ifndef WALK_FEW
 #define WALK_FEW 6
-#endif
-#ifndef WALK_MANY
 #define WALK_MANY 24
-#endif
 
 static int walk_step(fl_sweep_cursor *cur, const double *q3, fl_closest *r)
 {
@@ -354,10 +346,12 @@ static int walk_step(fl_sweep_cursor *cur, const double *q3, fl_closest *r)
     return 1;
 }
 
-void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built)
+void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built,
+                                size_t *trimmed)
 {
     *answered = cursor->walk.answered;
     *built = cursor->walk.built;
+    *trimmed = cursor->walk.trimmed;
 }
 
 fl_status fl_sweep_cursor_new(const fl_sweep *sweep, fl_sweep_cursor **out, fl_error *err)

@@ -133,6 +133,7 @@ typedef struct fl_sweep_walk {
     double second;   /* a lower bound on every other leaf's distance at that query */
     size_t answered; /* queries answered inside a region (statistics for tests) */
     size_t built;    /* regions built */
+    size_t trimmed;  /* members let go because a region was full */
 } fl_sweep_walk;
 
 /* Answers q3 from the region when certified: 1 with r filled (exact), else 0. */
@@ -145,8 +146,10 @@ int fl_sweep_walk_answer(const fl_sweep *s, fl_sweep_walk *w, const double *q3, 
 int fl_sweep_walk_build(const fl_sweep *s, fl_sweep_walk *w, const double *q3, double reach,
                         uint32_t seed, uint32_t *stack, fl_closest *r);
 
-/* The walk statistics of a cursor (tests): queries answered inside a region, regions built. */
-void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built);
+/* The walk statistics of a cursor (tests): queries answered inside a region, regions built,
+ * members let go from full regions. */
+void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built,
+                                size_t *trimmed);
 
 /* end of walk region */
 

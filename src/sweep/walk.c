@@ -81,6 +81,7 @@ static void add_member(fl_sweep_walk *w, uint32_t id, double d, double *threshol
         w->d[w->n++] = d;
         return;
     }
+    w->trimmed++;
     size_t far = 0;
     for (size_t i = 1; i < w->n; i++)
         if (w->d[i] > w->d[far]) far = i;

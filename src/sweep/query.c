@@ -300,12 +300,14 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
     r->visited = st.visited;
 }
 
-/* A coherent stream (a step short against the last distance) goes through the walk region
+/* A coherent stream (a step below WALK_FRACTION of the last distance: the bench walk's steps
+ * are 1/20 to 1/100 of it, random streams' steps larger than it; at 1/2 the random bench
+ * streams built rare regions over thick shells, +9 % distances) goes through the walk region
  * (walk.c): answered inside the current one when certified, else from a new one around the
  * query, built for moves of WALK_REACH steps (2 measured best on the bench walk: 1 rebuilds
  * too often, 4 and more keep too many members). The kept queue is not brought along (that is
  * what makes a step cheap), so the next query through the queue starts from the root. */
-#define WALK_FRACTION 0.5
+#define WALK_FRACTION 0.125
 #define WALK_REACH 2.0
 #define WALK_REACH_MAX 64.0
 #define WALK_FEW 6
@@ -322,8 +324,9 @@ static int walk_step(fl_sweep_cursor *cur, const double *q3, fl_closest *r)
     if (!(step <= WALK_FRACTION * cur->last_distance)) return 0;
     if (!fl_sweep_walk_answer(s, &cur->walk, q3, r)) {
         if (cur->walk_reach < WALK_REACH) cur->walk_reach = WALK_REACH;
-        if (!fl_sweep_walk_build(s, &cur->walk, q3, cur->walk_reach * step, cur->last_leaf,
-                                 cur->stack, r))
+        /* A reach beyond a quarter of the distance would sweep a thick shell of the shape. */
+        double reach = fmin(cur->walk_reach * step, 0.25 * cur->last_distance);
+        if (!fl_sweep_walk_build(s, &cur->walk, q3, reach, cur->last_leaf, cur->stack, r))
             return 0;
         /* Few members: a wider region is cheap to check and lives longer; many: narrower. */
         if (cur->walk.n < WALK_FEW && cur->walk_reach < WALK_REACH_MAX) cur->walk_reach *= 2;

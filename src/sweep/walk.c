@@ -127,8 +127,8 @@ int fl_sweep_walk_build(const fl_sweep *s, fl_sweep_walk *w, const double *q3, d
     w->slack = fl_sweep_query_slack(s, q3);
     w->updates = s->updates;
     memcpy(w->center, q3, sizeof w->center);
-    double threshold = fl_sweep_node_distance(s, s->nodes + seed, q3, b, p) + 2 * reach +
-                       2 * w->slack;
+    double threshold =
+        fl_sweep_node_distance(s, s->nodes + seed, q3, b, p) + 2 * reach + 2 * w->slack;
     if (!(threshold < INFINITY)) return 0;
     double best = INFINITY;
     uint32_t best_leaf = FL_SWEEP_LEAF;

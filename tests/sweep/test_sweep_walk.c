@@ -259,10 +259,14 @@ static void test_walk_polyline_across_and_along_the_midline(void)
     enum { SIDE = 40 };
     double pts[4 * SIDE * 2];
     size_t n = 0;
-    for (int i = 0; i < SIDE; i++, n++) pts[2 * n] = -2 + 4.0 * i / SIDE, pts[2 * n + 1] = -0.5;
-    for (int i = 0; i < SIDE; i++, n++) pts[2 * n] = 2, pts[2 * n + 1] = -0.5 + 1.0 * i / SIDE;
-    for (int i = 0; i < SIDE; i++, n++) pts[2 * n] = 2 - 4.0 * i / SIDE, pts[2 * n + 1] = 0.5;
-    for (int i = 0; i < SIDE; i++, n++) pts[2 * n] = -2, pts[2 * n + 1] = 0.5 - 1.0 * i / SIDE;
+    for (int i = 0; i < SIDE; i++, n++)
+        pts[2 * n] = -2 + 4.0 * i / SIDE, pts[2 * n + 1] = -0.5;
+    for (int i = 0; i < SIDE; i++, n++)
+        pts[2 * n] = 2, pts[2 * n + 1] = -0.5 + 1.0 * i / SIDE;
+    for (int i = 0; i < SIDE; i++, n++)
+        pts[2 * n] = 2 - 4.0 * i / SIDE, pts[2 * n + 1] = 0.5;
+    for (int i = 0; i < SIDE; i++, n++)
+        pts[2 * n] = -2, pts[2 * n + 1] = 0.5 - 1.0 * i / SIDE;
     fl_sweep *s = NULL;
     fl_sweep_cursor *cur = NULL;
     fl_error err;

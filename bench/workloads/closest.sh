@@ -9,11 +9,16 @@
 # §4.2-4.3), run in the same rounds (spatial, collapse, CGAL alternate), with its ratio to the
 # spatial hierarchy and its memory (hierarchy + one cursor) in the notes.
 #
-# Environment besides lib.sh's: CLOSEST_QUERIES (default 200000), CLOSEST_REPS (default 1).
+# Environment besides lib.sh's: CLOSEST_QUERIES (default 200000), CLOSEST_REPS (default 1),
+# CLOSEST_COLLAPSE (default 1; 0 skips the *_collapse rows: at 200 000 queries the collapse
+# hierarchy's random streams alone take about half an hour on a loaded machine),
+# CLOSEST_MESHES (default "bunny armadillo bunny00": which meshes to run).
 set -euo pipefail
 source "$(dirname "$0")/../lib.sh"
 NQ=${CLOSEST_QUERIES:-200000}
 REPS=${CLOSEST_REPS:-1}
+COLLAPSE=${CLOSEST_COLLAPSE:-1}
+MESHES=${CLOSEST_MESHES:-bunny armadillo bunny00}
 
 one_mesh() { # NAME FILE NOTES
   local name=$1 file=$2 notes=$3 prefix=$BENCH_DATA/closest-$1 kind o p ob pb line diff prep
@@ -28,11 +33,13 @@ one_mesh() { # NAME FILE NOTES
         { echo "ERROR|closest_${name}_$kind|ours failed"; return 0; }
       o+="$(field query_s "$line")"$'\n'
       ob+="$(field build_s "$line")"$'\n'
-      line=$("$BENCH_BIN/eval_closest" run "$prefix" $kind "$REPS" collapse | grep '^RESULT') ||
-        { echo "ERROR|closest_${name}_${kind}_collapse|ours failed"; return 0; }
-      c+="$(field query_s "$line")"$'\n'
-      cb+="$(field build_s "$line")"$'\n'
-      bytes=$(field bytes_per_triangle "$line")
+      if [ "$COLLAPSE" != 0 ]; then
+        line=$("$BENCH_BIN/eval_closest" run "$prefix" $kind "$REPS" collapse | grep '^RESULT') ||
+          { echo "ERROR|closest_${name}_${kind}_collapse|ours failed"; return 0; }
+        c+="$(field query_s "$line")"$'\n'
+        cb+="$(field build_s "$line")"$'\n'
+        bytes=$(field bytes_per_triangle "$line")
+      fi
       line=$("$BENCH_BIN/cgal_aabb" "$prefix" $kind "$REPS" | grep '^RESULT') ||
         { echo "ERROR|closest_${name}_$kind|CGAL failed"; return 0; }
       p+="$(field query_s "$line")"$'\n'
@@ -44,6 +51,7 @@ one_mesh() { # NAME FILE NOTES
       "$name" $kind "$o" "$p" "$(awk -v o="$o" -v p="$p" 'BEGIN {printf "%.2f", o / p}')" "$notes" \
       "$NQ" $kind "$(field max_abs_diff "$diff")" "$(field max_distance "$diff")" \
       "$(median <<<"${ob%$'\n'}")" "$(median <<<"${pb%$'\n'}")"
+    [ "$COLLAPSE" != 0 ] || continue
     diff=$("$BENCH_BIN/eval_closest" compare "$prefix.$kind.collapse.d" "$prefix.$kind.cgal.d")
     c=$(median <<<"${c%$'\n'}")
     printf 'ROW|closest_%s_%s_collapse|%s|CGAL AABB_tree|%s|%s|%s; edge-collapse hierarchy, %s %s queries; %.2f x the spatial hierarchy; distances agree to %s; build collapse %s s, CGAL %s s; %s bytes a triangle (hierarchy + cursor)\n' \
@@ -52,6 +60,13 @@ one_mesh() { # NAME FILE NOTES
       "$(median <<<"${cb%$'\n'}")" "$(median <<<"${pb%$'\n'}")" "$bytes"
   done
 }
-one_mesh bunny "$BENCH_CACHE/real/bunny.off" "npm bunny (3 674 triangles)"
-one_mesh armadillo "$BENCH_CACHE/cgal/data/meshes/armadillo.off" "libcgal-demo armadillo.off (52 000 triangles)"
-one_mesh bunny00 "$BENCH_CACHE/cgal/data/meshes/bunny00.off" "libcgal-demo bunny00.off (75 408 triangles)"
+for mesh in $MESHES; do
+  case $mesh in
+    bunny) one_mesh bunny "$BENCH_CACHE/real/bunny.off" "npm bunny (3 674 triangles)" ;;
+    armadillo) one_mesh armadillo "$BENCH_CACHE/cgal/data/meshes/armadillo.off" \
+      "libcgal-demo armadillo.off (52 000 triangles)" ;;
+    bunny00) one_mesh bunny00 "$BENCH_CACHE/cgal/data/meshes/bunny00.off" \
+      "libcgal-demo bunny00.off (75 408 triangles)" ;;
+    *) echo "ERROR|closest_$mesh|unknown mesh (bunny, armadillo, bunny00)" ;;
+  esac
+done

@@ -44,6 +44,9 @@ struct fl_sweep_cursor {
     double back_min;
     double moved_seen;     /* s->moved and s->updates when the queue was last brought up */
     uint64_t updates_seen; /* to date with the shape's motion (§5.2, §5.3) */
+    fl_sweep_walk walk;    /* the certified region of coherent streams (walk.c) */
+    uint32_t *stack;       /* the walk region's search stack, one slot a node */
+    double walk_reach;     /* the next region's reach in steps (walk_step) */
 };
 
 static void fill_leaf(const fl_sweep *s, uint32_t leaf, const double *q3, fl_closest *r)
@@ -297,6 +300,63 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
     r->visited = st.visited;
 }
 
+/* A coherent stream (a step below WALK_FRACTION of the last distance: the bench walk's steps
+ * are 1/20 to 1/100 of it, random streams' steps larger than it; at 1/2 the random bench
+ * streams built rare regions over thick shells, +9 % distances) goes through the walk region
+ * (walk.c): answered inside the current one when certified, else from a new one around the
+ * query, built for moves of WALK_REACH steps (2 measured best on the bench walk: 1 rebuilds
+ * too often, 4 and more keep too many members). The kept queue is not brought along (that is
+ * what makes a step cheap), so the next query through the queue starts from the root. */
+#define WALK_FRACTION 0.125
+#define WALK_REACH 2.0
+#define WALK_REACH_MAX 64.0
+#define WALK_FEW 6
+#define WALK_MANY 24
+
+static int walk_step(fl_sweep_cursor *cur, const double *q3, fl_closest *r)
+{
+    const fl_sweep *s = cur->s;
+    if (cur->last_leaf == FL_SWEEP_LEAF) return 0;
+    double d2 = 0;
+    for (int c = 0; c < 3; c++)
+        d2 += (q3[c] - cur->q[c]) * (q3[c] - cur->q[c]);
+    double step = sqrt(d2);
+    if (!(step <= WALK_FRACTION * cur->last_distance)) return 0;
+    if (!fl_sweep_walk_answer(s, &cur->walk, q3, r)) {
+        if (cur->walk_reach < WALK_REACH) cur->walk_reach = WALK_REACH;
+        /* A reach beyond a quarter of the distance would sweep a thick shell of the shape. */
+        double reach = fmin(cur->walk_reach * step, 0.25 * cur->last_distance);
+        if (!fl_sweep_walk_build(s, &cur->walk, q3, reach, cur->last_leaf, cur->stack, r))
+            return 0;
+        /* Few members: a wider region is cheap to check and lives longer; many: narrower. */
+        if (cur->walk.n < WALK_FEW && cur->walk_reach < WALK_REACH_MAX) cur->walk_reach *= 2;
+        if (cur->walk.n > WALK_MANY && cur->walk_reach > WALK_REACH) cur->walk_reach /= 2;
+    }
+    for (int c = 0; c < 3; c++)
+        cur->q[c] = q3[c];
+    cur->last_distance = r->distance;
+    cur->last_leaf = cur->walk.answer;
+    cur->started = 0; /* so the queue's motion bookkeeping may restart with this shape state */
+    cur->updates_seen = s->updates;
+    cur->moved_seen = s->moved;
+    /* §3.3's ball from the region's second-nearest bound, as set_ball does from the heap. */
+    double radius = (cur->walk.second - r->distance) / 2 - fl_sweep_query_slack(s, q3);
+    cur->have_ball = radius > 0;
+    cur->radius = radius;
+    cur->leaf = cur->walk.answer;
+    for (int c = 0; c < 3; c++)
+        cur->center[c] = q3[c];
+    return 1;
+}
+
+void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built,
+                                size_t *trimmed)
+{
+    *answered = cursor->walk.answered;
+    *built = cursor->walk.built;
+    *trimmed = cursor->walk.trimmed;
+}
+
 fl_status fl_sweep_cursor_new(const fl_sweep *sweep, fl_sweep_cursor **out, fl_error *err)
 {
     if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "output pointer is NULL");
@@ -304,13 +364,16 @@ fl_status fl_sweep_cursor_new(const fl_sweep *sweep, fl_sweep_cursor **out, fl_e
     if (!sweep) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "sweep hierarchy is NULL");
     fl_sweep_cursor *cur = calloc(1, sizeof *cur);
     fl_sweep_entry *e = fl_alloc_array(sweep->node_count, sizeof *e);
-    if (!cur || !e) {
+    uint32_t *stack = fl_alloc_array(sweep->node_count, sizeof *stack);
+    if (!cur || !e || !stack) {
         free(cur);
         free(e);
+        free(stack);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a sweep cursor");
     }
     cur->s = sweep;
     cur->h.e = e;
+    cur->stack = stack;
     cur->last_leaf = FL_SWEEP_LEAF;
     *out = cur;
     return FL_OK;
@@ -325,6 +388,7 @@ void fl_sweep_cursor_free(fl_sweep_cursor *cursor)
 {
     if (!cursor) return;
     free(cursor->h.e);
+    free(cursor->stack);
     free(cursor);
 }
 
@@ -348,6 +412,7 @@ fl_status fl_sweep_cursor_closest(fl_sweep_cursor *cursor, const double *q, doub
             return FL_OK;
         }
     }
+    if (tolerance == 0 && walk_step(cursor, q3, result)) return FL_OK;
     sweep_query(cursor, q3, tolerance, result);
     return FL_OK;
 }

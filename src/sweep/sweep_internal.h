@@ -115,4 +115,49 @@ fl_status fl_sweep_alloc(int dim, int triangles, size_t elements, fl_sweep **out
  * (keyframes.c) is an ordinary mesh hierarchy whose nodes are rewritten at every time. */
 /* ---- end of moving shapes ---- */
 
+/* ==== walk region (walk.c, issue #9: coherent walks) ==== */
+
+/* Most members a walk region keeps: enough for the triangles around a vertex a few steps
+ * wide; a region that would hold more keeps the nearest and lowers its bound. */
+#define FL_SWEEP_WALK_CAP 64
+
+/* A certified "answer cannot change" region for coherent streams, generalising §3.3's ball to
+ * near-ties: at its centre c every region of the hierarchy outside `leaf[0..n)` is at least
+ * `bound` away (lower bounds already widened for rounding), and member i was d[i] away
+ * (ascending). A query q with t = |q - c| is answered by the nearest member as long as that
+ * member's distance is at most bound - t: by the triangle inequality nothing outside comes
+ * nearer than bound - t. */
+typedef struct fl_sweep_walk {
+    int valid;
+    uint64_t updates; /* s->updates when built: a shape update invalidates the region */
+    double center[3];
+    double bound;
+    double slack; /* the rounding slack of the distances taken at the centre */
+    size_t n;
+    uint32_t leaf[FL_SWEEP_WALK_CAP];
+    double d[FL_SWEEP_WALK_CAP];
+    uint32_t answer; /* the leaf of the last answer given through the region */
+    double second;   /* a lower bound on every other leaf's distance at that query */
+    size_t answered; /* queries answered inside a region (statistics for tests) */
+    size_t built;    /* regions built */
+    size_t trimmed;  /* members let go because a region was full */
+} fl_sweep_walk;
+
+/* Answers q3 from the region when certified: 1 with r filled (exact), else 0. */
+int fl_sweep_walk_answer(const fl_sweep *s, fl_sweep_walk *w, const double *q3, fl_closest *r);
+
+/* Builds the region around q3 for moves up to `reach` and answers q3 exactly: a depth-first
+ * search from the root for every region whose lower bound is below the distance to `seed` (any
+ * leaf: an upper bound) plus 2 reach. `stack` holds s->node_count ids. Returns 0 (no answer)
+ * only if the search found no leaf, which rounding alone could cause. */
+int fl_sweep_walk_build(const fl_sweep *s, fl_sweep_walk *w, const double *q3, double reach,
+                        uint32_t seed, uint32_t *stack, fl_closest *r);
+
+/* The walk statistics of a cursor (tests): queries answered inside a region, regions built,
+ * members let go from full regions. */
+void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built,
+                                size_t *trimmed);
+
+/* end of walk region */
+
 #endif /* FL_SWEEP_INTERNAL_H */

@@ -1037,8 +1037,10 @@ typedef struct fl_sweep_options {
  *  - exact = 0 (only with a tolerance > 0): the true distance lies in [lower, upper] and
  *    upper - lower <= tolerance; `distance` is the midpoint. element/point/bary describe the
  *    nearest element evaluated so far (element = FL_SWEEP_NONE and point NaN if none).
- *  - reused = 1 when the query was answered in constant time from the previous query's
- *    coherence ball (§3.3); `visited` counts the hierarchy nodes whose distance was computed. */
+ *  - reused = 1 when a cursor answered the query in constant time from earlier work: the
+ *    previous query's coherence ball (§3.3) or the walk region of a coherent stream (the
+ *    members near the last answer, certified by a lower bound on everything else; one
+ *    distance measured); `visited` counts the hierarchy nodes whose distance was computed. */
 typedef struct fl_closest {
     double distance;
     double point[3];

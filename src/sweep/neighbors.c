@@ -16,7 +16,12 @@ static void sweep_ordered(const fl_sweep *s, fl_sweep_heap *h, const double *q3,
 {
     double slack = fl_sweep_query_slack(s, q3), bary[3], c[3];
     h->n = 0;
-    fl_sweep_heap_push(h, (fl_sweep_entry){-INFINITY, 0, 0, 0});
+    /* The root enters like any child: a one-element hierarchy's root is a leaf, and its key is
+     * the distance that is emitted (an unconditional -inf key gave distance -inf and ignored
+     * the radius). */
+    const fl_sweep_node *root = s->nodes;
+    double lo0 = fl_sweep_is_leaf(root) ? fl_sweep_node_distance(s, root, q3, bary, c) : -INFINITY;
+    if (lo0 <= radius) fl_sweep_heap_push(h, (fl_sweep_entry){lo0, 0, 0, 0});
     while (h->n > 0) {
         fl_sweep_entry top = fl_sweep_heap_pop(h);
         const fl_sweep_node *node = s->nodes + top.node;

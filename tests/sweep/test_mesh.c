@@ -352,6 +352,38 @@ static void test_sweep_knearest_and_within_match_brute_force(void)
     fl_mesh_free(&m);
 }
 
+/* §4.4 on a one-triangle mesh, whose hierarchy is a single leaf (found by h-collapse2's fuzz
+ * check): the distance is the point-triangle distance (it was -inf), and "within r" honours r
+ * (the leaf was returned at any radius). */
+static void test_sweep_knearest_and_within_on_one_triangle(void)
+{
+    double xyz[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    uint32_t tri[3] = {0, 1, 2};
+    fl_mesh m = {3, xyz, 1, tri};
+    fl_sweep *s = NULL;
+    fl_error err;
+    CHECK_STATUS(fl_sweep_build(&m, NULL, &s, &err), FL_OK, &err);
+    if (!s) return;
+    double q[3] = {0.25, 0.25, 2};
+    double bf = (double)oracle_mesh_element(xyz, tri, 0, q);
+    uint32_t el = 7;
+    double d = 0;
+    size_t found = 0;
+    CHECK_STATUS(fl_sweep_knearest(s, q, 3, &el, &d, &found, &err), FL_OK, &err);
+    CHECK_EQ_INT(found, 1);
+    CHECK_EQ_INT(el, 0);
+    CHECK_NEAR(d, bf, 1e-15);
+    fl_sweep_hits hits;
+    CHECK_STATUS(fl_sweep_within(s, q, 1.5, &hits, &err), FL_OK, &err);
+    CHECK_EQ_INT(hits.count, 0);
+    fl_sweep_hits_free(&hits);
+    CHECK_STATUS(fl_sweep_within(s, q, 2.5, &hits, &err), FL_OK, &err);
+    CHECK_EQ_INT(hits.count, 1);
+    if (hits.count == 1) CHECK_NEAR(hits.distance[0], bf, 1e-15);
+    fl_sweep_hits_free(&hits);
+    fl_sweep_free(s);
+}
+
 static void test_sweep_rejects_bad_meshes(void)
 {
     fl_error err;
@@ -393,4 +425,5 @@ FL_TEST_MAIN(FL_TEST_CASE(test_sweep_torus_matches_brute_force),
              FL_TEST_CASE(test_sweep_dynamic_walk_stays_exact_and_is_cheaper),
              FL_TEST_CASE(test_sweep_tolerance_interval_brackets_distance),
              FL_TEST_CASE(test_sweep_knearest_and_within_match_brute_force),
+             FL_TEST_CASE(test_sweep_knearest_and_within_on_one_triangle),
              FL_TEST_CASE(test_sweep_rejects_bad_meshes))

@@ -317,6 +317,10 @@ static int walk_step(fl_sweep_cursor *cur, const double *q3, fl_closest *r)
 {
     const fl_sweep *s = cur->s;
     if (cur->last_leaf == FL_SWEEP_LEAF) return 0;
+    /* The shape moved since the last query (§5.2/§5.3 updates): a region dies with every
+     * update and rebuilding it from the root each step cost four times the kept queue, which
+     * widens its intervals by the motion instead (test_sweep_polyline_motion's walk). */
+    if (cur->updates_seen != s->updates) return 0;
     double d2 = 0;
     for (int c = 0; c < 3; c++)
         d2 += (q3[c] - cur->q[c]) * (q3[c] - cur->q[c]);

@@ -203,6 +203,8 @@ int cmd_skin(int argc, char **argv)
     if (a.mesh && a.balls) return cli_fail(1, "skin: give either --balls BALLS or MESH, not both");
     if (a.mesh && !a.has_epsilon) return cli_fail(1, "skin: MESH needs --epsilon E (see --help)");
     if (a.has_epsilon && !a.mesh) return cli_fail(1, "skin: --epsilon needs a MESH (see --help)");
+    int code = cli_check_output(c.output, "off obj ply stl");
+    if (code) return code;
     if (a.mesh) return skin_of_mesh(&c, &a);
     if (!a.balls) return cli_fail(1, "skin: needs --balls BALLS or MESH --epsilon E (see --help)");
     fl_error err;

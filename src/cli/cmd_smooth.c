@@ -266,6 +266,9 @@ int cmd_smooth(int argc, char **argv)
         return 0;
     }
     if (!a.input) return cli_fail(1, "smooth: needs a POLYGON or MESH file (see --help)");
+    int code = cli_check_output(c.output, is_polygon_file(a.input) ? "svg xy geojson json"
+                                                                   : "off obj ply stl bez");
+    if (code) return code;
     if (is_polygon_file(a.input)) {
         if (a.scheme || a.tess)
             return cli_fail(1, "smooth: --scheme and --tess apply to meshes, not polygons");

@@ -26,6 +26,9 @@ static const format_case formats_of[] = {
     {"reconstruct " DEMO "peanut.xyz'", "off obj ply stl", "xy"},
     {"hal " DEMO "leaf-truth.xy' --level 2", "xy geojson json svg", "off"},
     {"hal " DEMO "peanut-truth.off' --level 2", "off obj ply stl", "svg"},
+    {"smooth " DEMO "leaf-truth.xy'", "svg xy geojson json", "off"},
+    {"smooth " DEMO "peanut-truth.off' --scheme three-split --tess 1", "off obj ply stl bez", "svg"},
+    {"skin --balls skinfmt_balls.txt", "off obj ply stl", "xyz"},
 };
 
 static long file_size(const char *path)
@@ -36,6 +39,7 @@ static long file_size(const char *path)
 
 static void test_every_listed_format_is_written(void)
 {
+    cli_write_file("skinfmt_balls.txt", "0 0 0 1\n1.2 0 0 1\n");
     for (size_t i = 0; i < sizeof formats_of / sizeof formats_of[0]; i++) {
         char formats[64];
         snprintf(formats, sizeof formats, "%s", formats_of[i].formats);
@@ -54,10 +58,12 @@ static void test_every_listed_format_is_written(void)
             }
         }
     }
+    remove("skinfmt_balls.txt");
 }
 
 static void test_other_formats_fail_before_the_work(void)
 {
+    cli_write_file("skinfmt_balls.txt", "0 0 0 1\n1.2 0 0 1\n");
     for (size_t i = 0; i < sizeof formats_of / sizeof formats_of[0]; i++) {
         char out[64], args[512];
         snprintf(out, sizeof out, "outfmt_bad_%zu.%s", i, formats_of[i].refused);
@@ -73,6 +79,7 @@ static void test_other_formats_fail_before_the_work(void)
         CHECK_MSG(strstr(r.err, "no file extension") != NULL, "%s: %s", args, r.err);
         CHECK(file_size("outfmt_noext") < 0);
     }
+    remove("skinfmt_balls.txt");
 }
 
 FL_TEST_MAIN(FL_TEST_CASE(test_every_listed_format_is_written),

@@ -1,4 +1,4 @@
-/* The volume invariant shared by the moving-shape tests (test_sweep_dynamic.c,
+/* The volume invariant shared by the mesh tests (test_mesh.c, test_sweep_dynamic.c,
  * test_sweep_keyframes.c): checked against the long-double oracle. */
 #ifndef SWEEP_VOLUME_CHECK_H
 #define SWEEP_VOLUME_CHECK_H

@@ -4,6 +4,7 @@
 #include "fl_test.h"
 #include "sweep/sweep_internal.h"
 #include "mesh_answer_check.h"
+#include "sweep_volume_check.h"
 
 static unsigned long long rng = 0x5eedULL;
 
@@ -181,26 +182,7 @@ static void test_sweep_volumes_contain_their_triangles(void)
     CHECK_STATUS(fl_sweep_build(&m, NULL, &s, &err), FL_OK, &err);
     if (!s) return;
     CHECK_EQ_INT(s->node_count, 2 * m.triangle_count - 1);
-    uint32_t *stack = malloc(s->node_count * sizeof *stack);
-    for (size_t i = 0; i < s->node_count; i++) {
-        const fl_sweep_node *node = s->nodes + i;
-        size_t top = 0;
-        stack[top++] = (uint32_t)i;
-        while (top > 0) {
-            const fl_sweep_node *d = s->nodes + stack[--top];
-            if (d->child[0] != FL_SWEEP_LEAF) {
-                stack[top++] = d->child[0];
-                stack[top++] = d->child[1];
-                continue;
-            }
-            for (int k = 0; k < 3; k++) {
-                const double *p = oracle_vertex(m.xyz, m.tri, d->element, k);
-                ld e = oracle_triangle(p, node->v, node->v + 3, node->v + 6);
-                CHECK_MSG(e <= node->eps, "node %zu eps %g < %Lg", i, node->eps, e);
-            }
-        }
-    }
-    free(stack);
+    check_volumes(s, &m);
     fl_sweep_free(s);
     fl_mesh_free(&m);
 }

@@ -81,6 +81,7 @@ cpu=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1)
   echo "- peer: assimp $(dpkg-query -W -f='${Version}' libassimp-dev) (Debian libassimp-dev)"
   echo "- peers (Delaunay): CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) (libcgal-dev, g++ -O2 -DNDEBUG), qhull $(dpkg-query -W -f='${Version}' qhull-bin) (qhull-bin), TetGen $(dpkg-query -W -f='${Version}' tetgen) (tetgen)"
   echo "- peer (check): CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) (Debian libcgal-dev)"
+  echo "- peer (closest_deform): CGAL $(dpkg-query -W -f='${Version}' libcgal-dev) AABB_tree rebuilt + accelerate_distance_queries every frame (bench/workloads/closest_deform.sh)"
   echo
   echo "| workload | ours (s) | peer | peer (s) | ratio ours/peer (wall) | ratio (CPU) | notes |"
   echo "|---|---:|---|---:|---:|---:|---|"

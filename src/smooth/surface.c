@@ -216,20 +216,27 @@ static int solve_edge(const edge_frame *q, double *l1, double *r1, double *condi
     double fro = a00 * a00 + a01 * a01 + a10 * a10 + a11 * a11;
     int dependent = !(fabs(det) > 1e-12 * fro);
     *conditioning = fabs(det) / fro;
+    const double a[2][2] = {{a00, a01}, {a10, a11}};
     for (int k = 0; k < 3; k++) {
         const double *M0 = q->m[0], *M1 = q->m[1], *M2 = q->m[2], *M3 = q->m[3];
-        double b0 = 2 * (f0 + g0) * M1[k] - e1 * (M1[k] - M0[k]) - 2 * e0 * (M2[k] - M1[k]) -
-                    f1 * la[k] - g1 * ra[k];
-        double b1 = 2 * (f1 + g1) * M1[k] - 2 * e1 * (M2[k] - M1[k]) - e0 * (M3[k] - M2[k]) -
-                    f0 * lb[k] - g0 * rb[k];
+        /* b - A x_old from differences only (no absolute coordinates): on a nearly dependent
+         * edge the solution error is the residual times 1 / conditioning (up to 1e7 on
+         * CGAL's torus_quad.off), so the residual must not carry eps |coordinates|. */
+        long double s0 = -(long double)e1 * (M1[k] - M0[k]) - 2.0L * e0 * (M2[k] - M1[k]) -
+                         (long double)f1 * la[k] - (long double)g1 * ra[k] -
+                         (long double)a00 * (l1[k] - M1[k]) - (long double)a01 * (r1[k] - M1[k]);
+        long double s1 = -2.0L * e1 * (M2[k] - M1[k]) - (long double)e0 * (M3[k] - M2[k]) -
+                         (long double)f0 * lb[k] - (long double)g0 * rb[k] -
+                         (long double)a10 * (l1[k] - M1[k]) - (long double)a11 * (r1[k] - M1[k]);
+        double dl, dr;
         if (!dependent) {
-            l1[k] = (a11 * b0 - a01 * b1) / det;
-            r1[k] = (a00 * b1 - a10 * b0) / det;
+            g1_solve2_refined(a, s0, s1, &dl, &dr);
         } else {
-            double s0 = b0 - a00 * l1[k] - a01 * r1[k], s1 = b1 - a10 * l1[k] - a11 * r1[k];
-            l1[k] += (a00 * s0 + a10 * s1) / fro;
-            r1[k] += (a01 * s0 + a11 * s1) / fro;
+            dl = (double)((a00 * s0 + a10 * s1) / fro);
+            dr = (double)((a01 * s0 + a11 * s1) / fro);
         }
+        l1[k] += dl;
+        r1[k] += dr;
     }
     return dependent;
 }

@@ -71,6 +71,12 @@ void g1_edge_point(const double *p, const double *n, const double *q, double ten
 int g1_edge_coefficients(const double *d, const double *l, const double *r, const double *n,
                          double *e, double *f, double *g);
 
+/* x with a x = b for a 2 x 2 matrix a that is not singular: partial pivoting in long double
+ * and one step of iterative refinement (small_solve.c; the step-5 solve of the three-split on
+ * nearly dependent edges). Non-finite results become 0. */
+void g1_solve2_refined(const double a[2][2], long double b0, long double b1, double *x0,
+                       double *x1);
+
 /* The blossom (polar form) of a cubic Bézier triangle (control points in fl_g1_surface order)
  * at barycentric u1, u2, u3 (six_split.c). */
 void g1_blossom(const double net[10][3], const double *u1, const double *u2, const double *u3,

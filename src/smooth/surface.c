@@ -183,8 +183,10 @@ typedef struct edge_frame {
  * The 2x2 matrix A = 2 [f0 g0; f1 g1] acts on each coordinate alike. When the equations are
  * independent the solution is unique; when they are dependent we take the solution with the
  * least displacement from the subdivision values: x = x_old + A^+ (B - A x_old), A^+ =
- * A^T / |A|_F^2 for rank one. Returns 1 for a dependent edge, -1 when an end has no
- * solution. */
+ * A^T / |A|_F^2 for rank one. Both are solved for the displacement from x_old with a
+ * right-hand side built from differences, the independent case by g1_solve2_refined
+ * (small_solve.c: Cramer's rule left 6.5e-7 degree jumps on nearly dependent edges). Returns
+ * 1 for a dependent edge, -1 when an end has no solution. */
 static int solve_edge(const edge_frame *q, double *l1, double *r1, double *conditioning)
 {
     double d0[3], la[3], ra[3], d3[3], lb[3], rb[3], back[3], l3[3], r3[3];
@@ -216,20 +218,27 @@ static int solve_edge(const edge_frame *q, double *l1, double *r1, double *condi
     double fro = a00 * a00 + a01 * a01 + a10 * a10 + a11 * a11;
     int dependent = !(fabs(det) > 1e-12 * fro);
     *conditioning = fabs(det) / fro;
+    const double a[2][2] = {{a00, a01}, {a10, a11}};
     for (int k = 0; k < 3; k++) {
         const double *M0 = q->m[0], *M1 = q->m[1], *M2 = q->m[2], *M3 = q->m[3];
-        double b0 = 2 * (f0 + g0) * M1[k] - e1 * (M1[k] - M0[k]) - 2 * e0 * (M2[k] - M1[k]) -
-                    f1 * la[k] - g1 * ra[k];
-        double b1 = 2 * (f1 + g1) * M1[k] - 2 * e1 * (M2[k] - M1[k]) - e0 * (M3[k] - M2[k]) -
-                    f0 * lb[k] - g0 * rb[k];
+        /* b - A x_old from differences only (no absolute coordinates): on a nearly dependent
+         * edge the solution error is the residual times 1 / conditioning (up to 1e7 on
+         * CGAL's torus_quad.off), so the residual must not carry eps |coordinates|. */
+        long double s0 = -(long double)e1 * (M1[k] - M0[k]) - 2.0L * e0 * (M2[k] - M1[k]) -
+                         (long double)f1 * la[k] - (long double)g1 * ra[k] -
+                         (long double)a00 * (l1[k] - M1[k]) - (long double)a01 * (r1[k] - M1[k]);
+        long double s1 = -2.0L * e1 * (M2[k] - M1[k]) - (long double)e0 * (M3[k] - M2[k]) -
+                         (long double)f0 * lb[k] - (long double)g0 * rb[k] -
+                         (long double)a10 * (l1[k] - M1[k]) - (long double)a11 * (r1[k] - M1[k]);
+        double dl, dr;
         if (!dependent) {
-            l1[k] = (a11 * b0 - a01 * b1) / det;
-            r1[k] = (a00 * b1 - a10 * b0) / det;
+            g1_solve2_refined(a, s0, s1, &dl, &dr);
         } else {
-            double s0 = b0 - a00 * l1[k] - a01 * r1[k], s1 = b1 - a10 * l1[k] - a11 * r1[k];
-            l1[k] += (a00 * s0 + a10 * s1) / fro;
-            r1[k] += (a01 * s0 + a11 * s1) / fro;
+            dl = (double)((a00 * s0 + a10 * s1) / fro);
+            dr = (double)((a01 * s0 + a11 * s1) / fro);
         }
+        l1[k] += dl;
+        r1[k] += dr;
     }
     return dependent;
 }

@@ -7,7 +7,7 @@ PREFIX ?= /usr/local
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE ?= cmake
 
-.PHONY: all build demo test test-debug test-asan install api-docs deb-test fuzz fuzz-build msan valgrind clean
+.PHONY: all build demo test test-debug test-asan test-release install api-docs deb-test fuzz fuzz-build msan valgrind clean
 
 all: build
 
@@ -30,6 +30,13 @@ test-asan:
 	$(CMAKE) --build build-asan -j $(JOBS)
 	cd build-asan && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
 		ctest --output-on-failure -j $(JOBS)
+
+# What a plain `cmake -S . -B DIR && cmake --build DIR` builds: Release with the tests (gcc -O2
+# finds warnings the debug build cannot), then its ctest. Run by CI.
+test-release:
+	$(CMAKE) -S . -B build-release -DCMAKE_BUILD_TYPE=Release -DFL_TESTS=ON >/dev/null
+	$(CMAKE) --build build-release -j $(JOBS)
+	cd build-release && ctest --output-on-failure -j $(JOBS)
 
 install: build
 	DESTDIR=$(DESTDIR) $(CMAKE) --install build --prefix $(PREFIX)
@@ -63,4 +70,4 @@ valgrind:
 	scripts/valgrind.sh build-debug
 
 clean:
-	rm -rf build build-debug build-asan build-fuzz build-msan
+	rm -rf build build-debug build-asan build-release build-fuzz build-msan

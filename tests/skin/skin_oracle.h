@@ -241,7 +241,7 @@ static long long euler_union_oracle(const double *xyzw, size_t n, int *ok)
     for (int k = 3; k >= 0; k--)
         for (size_t i = 0; i < u; i++) {
             if (s[i].k != k) continue;
-            ld f[3], w;
+            ld f[3] = {0, 0, 0}, w = 0; /* set by oracle_focus (initialised for gcc -O2) */
             oracle_focus(xyzw, s[i].v, k, f, &w);
             int inside_cell = 1;
             for (size_t j = 0; j < n && inside_cell; j++) {

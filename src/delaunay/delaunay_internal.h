@@ -61,6 +61,11 @@ typedef struct fl_dt2_ranked {
     uint32_t *tri, *adj; /* 3 per triangle: ranks, counterclockwise; neighbours or UINT32_MAX */
     size_t hull_count;
     uint32_t *hull; /* ranks, counterclockwise, as fl_dt2.hull */
+    /* The rest of tri's allocation after the triangles (16-byte aligned; memory the build has
+     * touched already, so no page faults on first use): free for the caller's scratch until
+     * tri is freed or reallocated. NULL when there is none. */
+    void *spare;
+    size_t spare_bytes;
 } fl_dt2_ranked;
 
 fl_status fl_dt2_build_ranked(const double *xy, size_t n, const fl_dt2_options *opt,

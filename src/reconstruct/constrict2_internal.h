@@ -34,6 +34,8 @@ typedef struct c2_heap {
     size_t heaped, capacity;
     c2_entry *parked; /* keys at or above the bar, and NaN keys; unsorted */
     size_t parked_count, parked_capacity;
+    int parked_lent;  /* parked is the caller's memory (c2_heap_lend): never freed here, and
+                         copied into an allocation of our own when it fills up */
     size_t count; /* heaped + parked_count */
     int level;    /* the bar is c2_heap's ladder[level]; past the ladder nothing is parked */
     const uint32_t *orig;
@@ -49,6 +51,9 @@ double c2_heap_first_bar(void);
  * the heap may have to grow it. */
 int c2_heap_pop(c2_heap *h, c2_entry *out);
 void c2_heap_clear(c2_heap *h); /* empties it (keeps the memory and orig) */
+/* Gives the empty heap `bytes` of caller memory (8-byte aligned) for its parked entries, which
+ * on a closed curve are a third of all pushes; it must stay valid until c2_heap_free. */
+void c2_heap_lend(c2_heap *h, void *memory, size_t bytes);
 void c2_heap_free(c2_heap *h);
 
 /* The pruned triangulation. Triangles keep the slots of the Delaunay triangulation; a deleted
@@ -73,6 +78,8 @@ typedef struct c2_state {
     size_t tcount;
     uint32_t *tri, *adj;
     uint8_t *alive;
+    int lent;              /* alive, on_boundary and bnext live in the Delaunay builder's spare
+                              memory (fl_dt2_ranked.spare, inside tri's allocation): not freed */
     int lazy_adj;          /* deletions leave the neighbours' links to the deleted triangle in
                               place (see c2_settle_adj); the rule above holds only once it is 0 */
     uint32_t *vtri;        /* per vertex: a living triangle at it; only kept up to date once

@@ -62,12 +62,21 @@ static inline int entry_less(const c2_heap *h, const c2_entry *x, const c2_entry
     return tie_less(h, x, y);
 }
 
-static int reserve(c2_entry **items, size_t *capacity, size_t count)
+/* Makes room for one more entry. `lent` (may be NULL) marks *items as memory that is not ours:
+ * it is copied, not reallocated, and the flag cleared. */
+static int reserve(c2_entry **items, size_t *capacity, size_t count, int *lent)
 {
     if (count < *capacity) return 0;
     size_t cap = *capacity ? 2 * *capacity : 256;
-    c2_entry *grown = fl_realloc_array(*items, cap, sizeof *grown);
+    c2_entry *grown;
+    if (lent && *lent) {
+        grown = fl_alloc_array(cap, sizeof *grown);
+        if (grown) memcpy(grown, *items, count * sizeof *grown);
+    } else {
+        grown = fl_realloc_array(*items, cap, sizeof *grown);
+    }
     if (!grown) return -1;
+    if (lent) *lent = 0;
     *items = grown;
     *capacity = cap;
     return 0;
@@ -75,7 +84,7 @@ static int reserve(c2_entry **items, size_t *capacity, size_t count)
 
 static int heap_push(c2_heap *h, c2_entry e)
 {
-    if (reserve(&h->items, &h->capacity, h->heaped)) return -1;
+    if (reserve(&h->items, &h->capacity, h->heaped, NULL)) return -1;
     size_t i = h->heaped++;
     while (i > 0) {
         size_t parent = (i - 1) / ARITY;
@@ -107,7 +116,8 @@ int c2_heap_push(c2_heap *h, c2_entry e)
 {
     if (h->level > 0) resolve(h, &e);
     if (e.lazy || parks(h, e.key)) {
-        if (reserve(&h->parked, &h->parked_capacity, h->parked_count)) return -1;
+        if (reserve(&h->parked, &h->parked_capacity, h->parked_count, &h->parked_lent))
+            return -1;
         h->parked[h->parked_count++] = e;
     } else if (heap_push(h, e)) {
         return -1;
@@ -168,9 +178,17 @@ void c2_heap_clear(c2_heap *h)
     h->level = 0;
 }
 
+void c2_heap_lend(c2_heap *h, void *memory, size_t bytes)
+{
+    if (h->parked || bytes < sizeof *h->parked) return;
+    h->parked = memory;
+    h->parked_capacity = bytes / sizeof *h->parked;
+    h->parked_lent = 1;
+}
+
 void c2_heap_free(c2_heap *h)
 {
     free(h->items);
-    free(h->parked);
+    if (!h->parked_lent) free(h->parked);
     memset(h, 0, sizeof *h);
 }

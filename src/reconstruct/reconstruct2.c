@@ -91,7 +91,7 @@ static int lend_spare(c2_state *s, const fl_dt2_ranked *dt)
  * already made); a copy of the triangles is made only if flips are going to change them
  * (c2_keep_dt). */
 static fl_status state_init(c2_state *s, fl_dt2_ranked *dt, fl_reconstruct2_criterion criterion,
-                            fl_error *err)
+                            int want_inv, fl_error *err)
 {
     size_t n = dt->unique_count, tc = dt->triangle_count;
     memset(s, 0, sizeof *s);
@@ -110,13 +110,18 @@ static fl_status state_init(c2_state *s, fl_dt2_ranked *dt, fl_reconstruct2_crit
     s->heap.xy = s->xy;
     dt->tri = dt->adj = dt->order = NULL;
     dt->xy = NULL;
+    fl_status st = want_inv ? make_inv(s, dt, err) : FL_OK;
+    if (st != FL_OK) return st;
+    /* duplicate_of (n_input >= n entries, written by the duplicate detection) is not read after
+     * make_inv: it becomes btri, and later the result's polygon, without fresh pages */
+    s->btri = dt->duplicate_of;
+    dt->duplicate_of = NULL;
     if (!lend_spare(s, dt)) {
         s->alive = fl_alloc_array(tc, 1);
         s->on_boundary = fl_calloc_array(n, 1);
         s->bnext = fl_alloc_array(n, sizeof *s->bnext);
     }
-    s->btri = fl_alloc_array(n, sizeof *s->btri);
-    if (!s->alive || !s->on_boundary || !s->bnext || !s->btri)
+    if (!s->alive || !s->on_boundary || !s->bnext)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu points", n);
     memset(s->alive, 1, tc);
     for (size_t i = 0; i < n; i++)
@@ -226,9 +231,8 @@ static fl_status run(const double *xy, size_t n, const fl_reconstruct2_options *
     fl_dt2_options dopt = {o->progress, o->progress_user, 0};
     fl_status st = fl_dt2_build_ranked(xy, n, &dopt, dt, err);
     if (st != FL_OK) return st;
-    if ((st = state_init(s, dt, o->criterion, err)) != FL_OK) return st;
-    if (o->keep_count && ((st = make_inv(s, dt, err)) != FL_OK ||
-                          (st = c2_keep_edges(s, s->inv, o->keep, o->keep_count, err)) != FL_OK))
+    if ((st = state_init(s, dt, o->criterion, o->keep_count > 0, err)) != FL_OK) return st;
+    if (o->keep_count && (st = c2_keep_edges(s, s->inv, o->keep, o->keep_count, err)) != FL_OK)
         return st;
     if ((st = push_hull(s, dt, err)) != FL_OK) return st;
     if ((st = c2_constrict(s, o->progress, o->progress_user, err)) != FL_OK) return st;

@@ -32,6 +32,7 @@ typedef struct c2_entry {
 typedef struct c2_heap {
     c2_entry *items; /* the 4-ary heap: keys below the bar */
     size_t heaped, capacity;
+    int items_lent;   /* items is the caller's memory, as parked_lent below */
     c2_entry *parked; /* keys at or above the bar, and NaN keys; unsorted */
     size_t parked_count, parked_capacity;
     int parked_lent;  /* parked is the caller's memory (c2_heap_lend): never freed here, and
@@ -51,8 +52,10 @@ double c2_heap_first_bar(void);
  * the heap may have to grow it. */
 int c2_heap_pop(c2_heap *h, c2_entry *out);
 void c2_heap_clear(c2_heap *h); /* empties it (keeps the memory and orig) */
-/* Gives the empty heap `bytes` of caller memory (8-byte aligned) for its parked entries, which
- * on a closed curve are a third of all pushes; it must stay valid until c2_heap_free. */
+/* Gives the empty heap `bytes` of caller memory (8-byte aligned) for its entries (an eighth for
+ * the heap proper, the rest for the parked entries, which on a closed curve are a third of all
+ * pushes); it must stay valid until c2_heap_free. Does nothing if the heap has memory already
+ * or `bytes` is too small. */
 void c2_heap_lend(c2_heap *h, void *memory, size_t bytes);
 void c2_heap_free(c2_heap *h);
 

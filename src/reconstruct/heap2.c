@@ -84,7 +84,7 @@ static int reserve(c2_entry **items, size_t *capacity, size_t count, int *lent)
 
 static int heap_push(c2_heap *h, c2_entry e)
 {
-    if (reserve(&h->items, &h->capacity, h->heaped, NULL)) return -1;
+    if (reserve(&h->items, &h->capacity, h->heaped, &h->items_lent)) return -1;
     size_t i = h->heaped++;
     while (i > 0) {
         size_t parent = (i - 1) / ARITY;
@@ -178,17 +178,24 @@ void c2_heap_clear(c2_heap *h)
     h->level = 0;
 }
 
+/* An eighth for the heap proper, the rest for the parked entries: on the 1e6-point curve the
+ * heap peaked at 45 421 entries and the parked array at about 5.3e5. */
 void c2_heap_lend(c2_heap *h, void *memory, size_t bytes)
 {
-    if (h->parked || bytes < sizeof *h->parked) return;
-    h->parked = memory;
-    h->parked_capacity = bytes / sizeof *h->parked;
+    size_t heap_entries = bytes / 8 / sizeof *h->items;
+    size_t parked_entries = (bytes - heap_entries * sizeof *h->items) / sizeof *h->parked;
+    if (h->items || h->parked || heap_entries == 0 || parked_entries == 0) return;
+    h->items = memory;
+    h->capacity = heap_entries;
+    h->items_lent = 1;
+    h->parked = h->items + heap_entries;
+    h->parked_capacity = parked_entries;
     h->parked_lent = 1;
 }
 
 void c2_heap_free(c2_heap *h)
 {
-    free(h->items);
+    if (!h->items_lent) free(h->items);
     if (!h->parked_lent) free(h->parked);
     memset(h, 0, sizeof *h);
 }

@@ -211,13 +211,13 @@ static void test_heap_lazy_keys_pop_as_computed_keys(void)
     c2_heap_free(&eager);
 }
 
-/* Parked entries in lent memory (c2_heap_lend, as fl_reconstruct2 lends the Delaunay builder's
- * spare memory): a lent buffer too small for all parked entries must be outgrown by a copy
+/* Entries in lent memory (c2_heap_lend, as fl_reconstruct2 lends the Delaunay builder's spare
+ * memory): a lent buffer too small for all heap and parked entries must be outgrown by a copy
  * (the lent memory is neither reallocated nor freed: it lies inside a guarded array here, whose
  * guard must stay intact) and the pops must be those of a queue that owns all its memory. */
-static void test_heap_lent_parked_memory_is_copied_when_outgrown(void)
+static void test_heap_lent_memory_is_copied_when_outgrown(void)
 {
-    enum { LENT = 40, GUARD = 8, N = 3000 };
+    enum { LENT = 48, GUARD = 8, N = 3000 };
     c2_entry buf[LENT + GUARD];
     for (int i = 0; i < LENT + GUARD; i++)
         buf[i] = (c2_entry){-7.0, 7, 7, 7, 0};
@@ -225,6 +225,8 @@ static void test_heap_lent_parked_memory_is_copied_when_outgrown(void)
     oracle_orig = NULL;
     c2_heap_lend(&lent, buf, LENT * sizeof *buf);
     CHECK_EQ_INT(lent.parked_lent, 1);
+    CHECK_EQ_INT(lent.items_lent, 1);
+    CHECK(lent.items == buf && lent.capacity == LENT / 8 && lent.parked == buf + LENT / 8);
     size_t wrong = 0;
     for (int i = 0; i < N; i++) {
         c2_entry e = random_entry();
@@ -233,6 +235,7 @@ static void test_heap_lent_parked_memory_is_copied_when_outgrown(void)
         if (i % 5 == 4) wrong += !same_entry(pop(&lent), pop(&own));
     }
     CHECK_EQ_INT(lent.parked_lent, 0); /* outgrown: the entries were copied out */
+    CHECK_EQ_INT(lent.items_lent, 0);
     while (own.count > 0 && lent.count > 0)
         wrong += !same_entry(pop(&lent), pop(&own));
     CHECK(own.count == 0 && lent.count == 0);
@@ -252,7 +255,7 @@ int main(void)
         FL_TEST_CASE(test_heap_survives_growth_past_many_levels),
         FL_TEST_CASE(test_heap_parks_high_keys_and_returns_them_in_order),
         FL_TEST_CASE(test_heap_lazy_keys_pop_as_computed_keys),
-        FL_TEST_CASE(test_heap_lent_parked_memory_is_copied_when_outgrown),
+        FL_TEST_CASE(test_heap_lent_memory_is_copied_when_outgrown),
     };
     return fl_test_run(cases, sizeof cases / sizeof *cases);
 }

@@ -10,7 +10,8 @@
  *   recon2_cpu random SEED COUNT        COUNT random sets (uniform or grid-snapped, with
  *                                       duplicates) of 3000-50000 points, as `hash`
  * `hash` and `random` print one line per run "H <case> <variant> <hash>" and a final
- * "TOTAL <runs> <ok> <hash>"; diff the outputs of two builds. */
+ * "TOTAL <runs> <ok> <hash>"; diff the outputs of two builds. Build against a release library:
+ *   cc -O2 -Iinclude bench/tools/recon2_cpu.c build-rel/libflintstone.a -lm -o recon2_cpu */
 #define _POSIX_C_SOURCE 200809L
 #include <sys/resource.h>
 #include <time.h>

@@ -5,8 +5,9 @@
  *   recon2_cpu time FILE.xy dt|rec K   K calls on the first ring of FILE (shuffled as
  *                                       bench/recon2_eval.h does); prints each CPU time, the
  *                                       least, and the page faults of each call
- *   recon2_cpu hash FILE.xy MIN_POINTS  every ring with at least MIN_POINTS points, the three
- *                                       criteria, then γ with two of the ring's edges kept
+ *   recon2_cpu hash FILE.xy MIN_POINTS [V]  every ring with at least MIN_POINTS points, the
+ *                                       three criteria, then γ with two of the ring's edges kept
+ *                                       (only the first V of these four runs when V is given)
  *   recon2_cpu random SEED COUNT        COUNT random sets (uniform or grid-snapped, with
  *                                       duplicates) of 3000-50000 points, as `hash`
  * `hash` and `random` print one line per run "H <case> <variant> <hash>" and a final
@@ -68,11 +69,12 @@ static uint64_t hash_run(const double *xy, size_t n, const fl_reconstruct2_optio
 
 static uint64_t total = 0xcbf29ce484222325ull;
 static size_t runs, oks;
+static int variants = 4;
 
 /* The three criteria, then γ with two edges kept: keep[] are input indices. */
 static void hash_case(size_t k, const double *xy, size_t n, const uint32_t keep[4])
 {
-    for (int v = 0; v < 4; v++) {
+    for (int v = 0; v < variants; v++) {
         fl_reconstruct2_options o = {0};
         o.criterion = v < 3 ? (fl_reconstruct2_criterion)v : FL_RECONSTRUCT2_GAMMA;
         if (v == 3) {
@@ -159,6 +161,7 @@ int main(int argc, char **argv)
     } else if (argc >= 4 && (strcmp(argv[1], "time") == 0 || strcmp(argv[1], "hash") == 0)) {
         r2_set s;
         int is_time = strcmp(argv[1], "time") == 0;
+        if (!is_time && argc > 4) variants = atoi(argv[4]);
         if (r2_load(argv[2], is_time ? 3 : (size_t)atol(argv[3]), &s) || s.count == 0) return 1;
         if (is_time) {
             int rc = cmd_time(&s, argv[3], argc > 4 ? atoi(argv[4]) : 1);

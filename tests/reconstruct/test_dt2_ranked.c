@@ -3,7 +3,8 @@
  * hull must be fl_dt2_build's, entry for entry and in the same order (constriction's results
  * are compared byte for byte with the earlier version, which built on fl_dt2_build), its
  * coordinates must be the input's, its order a bijection onto the first point of each kind, and
- * consecutive ranks must be close in the plane (the reason it exists). */
+ * consecutive ranks must be close in the plane (the reason it exists); the spare memory it
+ * lends after the triangles must not overlap them. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -33,6 +34,14 @@ static void compare(const double *xy, size_t n)
     CHECK(r.triangle_count == d.triangle_count && r.hull_count == d.hull_count);
     if (r.triangle_count != d.triangle_count || r.hull_count != d.hull_count) goto out;
     CHECK(memcmp(r.duplicate_of, d.duplicate_of, n * sizeof *r.duplicate_of) == 0);
+    /* The spare memory follows the triangles, 16-byte aligned, and is free to use: filled with
+     * junk here before tri and adj are compared (ASan: it lies inside tri's allocation). At
+     * least 7 bytes a point (what fl_reconstruct2 puts there besides its queue) are lent. */
+    const unsigned char *tri_end = (const unsigned char *)(r.tri + 3 * r.triangle_count);
+    CHECK(r.spare != NULL && (const unsigned char *)r.spare >= tri_end &&
+          (const unsigned char *)r.spare < tri_end + 16 && (uintptr_t)r.spare % 16 == 0);
+    CHECK(r.spare_bytes >= 7 * r.unique_count);
+    if (r.spare) memset(r.spare, 0xA5, r.spare_bytes);
     /* order: ranks -> distinct input points, each first of its kind exactly once */
     unsigned char *seen = calloc(n, 1);
     size_t bad = 0;

@@ -116,8 +116,7 @@ int c2_heap_push(c2_heap *h, c2_entry e)
 {
     if (h->level > 0) resolve(h, &e);
     if (e.lazy || parks(h, e.key)) {
-        if (reserve(&h->parked, &h->parked_capacity, h->parked_count, &h->parked_lent))
-            return -1;
+        if (reserve(&h->parked, &h->parked_capacity, h->parked_count, &h->parked_lent)) return -1;
         h->parked[h->parked_count++] = e;
     } else if (heap_push(h, e)) {
         return -1;

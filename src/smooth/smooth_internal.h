@@ -161,4 +161,10 @@ fl_status g1_measure_edges(const fl_g1_surface *sf, unsigned samples, fl_g1_metr
  * that are mesh vertices; max'ed into m. */
 void g1_measure_vertices(const fl_g1_surface *sf, const fl_mesh *mesh, fl_g1_metrics *m);
 
+/* The deviation part of fl_g1_surface_measure (measure.c): max distance of a grid of `samples`
+ * segments an edge on every patch from the mesh (exact closest points), in mean edge lengths,
+ * into m->max_deviation. */
+fl_status g1_measure_deviation(const fl_g1_surface *sf, const fl_mesh *mesh, unsigned samples,
+                               fl_g1_metrics *m, fl_error *err);
+
 #endif /* FL_SMOOTH_INTERNAL_H */

@@ -17,7 +17,10 @@
  * angles are blended towards equal spacing, gap' = (1 - alpha) gap + alpha 2 pi / k with the
  * least alpha that lifts every gap to min_gap: the order is kept, every gap stays in (0, pi)
  * (a convex combination of values in (0, pi)), and the directions move by at most about
- * alpha * pi (alpha ~ 1e-3 on the meshes above). Lengths stay those of the projected edges. */
+ * alpha * pi (alpha ~ 1e-3 on the meshes above). Lengths stay those of the projected edges.
+ * A gap within min_gap of pi is as bad (the spoke W - V = (E - V + E' - V) / 3 towards the
+ * split point, of two nearly opposite vectors, splits it into micro corners), so gaps above
+ * pi - min_gap are pulled below it the same way. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,7 +52,8 @@ static void project(const fl_mesh *m, const double *normals, uint32_t h, double 
 /* Spreads the star of vertex v whose half-edges are ring[0..k) in counter-clockwise order;
  * returns 1 if it changed tan. Stars that do not wind once around n (the orientation condition
  * failed, a NaN) are left alone. */
-static int spread_star(const double *n, const uint32_t *ring, size_t k, double *tan)
+static int spread_star(const fl_mesh *m, const double *n, const uint32_t *ring, size_t k,
+                       double *tan)
 {
     double u[3] = {1, 0, 0}, w[3], phi[SPREAD_STAR], gap[SPREAD_STAR];
     if (fabs(n[0]) > 0.6) u[0] = 0, u[1] = 1;
@@ -64,34 +68,48 @@ static int spread_star(const double *n, const uint32_t *ring, size_t k, double *
     }
     const double two_pi = 6.283185307179586;
     double sum = 0, smallest = INFINITY, even = two_pi / (double)k;
-    for (size_t i = 0; i < k; i++) {
+    for (size_t i = 0; i < k; i++) { /* signed, in (-pi, pi]: < 0 where a triangle projects
+                                        * clockwise (no valid normal, normals.c) */
         double g = phi[(i + 1) % k] - phi[i];
-        if (g < 0) g += two_pi;
+        if (g > 3.14159265358979) g -= two_pi;
+        if (g <= -3.14159265358979) g += two_pi;
         gap[i] = g;
         sum += g;
         smallest = fmin(smallest, g);
     }
-    /* One turn with every gap in (0, pi); else the orientation condition does not hold here. */
-    if (!(fabs(sum - two_pi) < 1e-9) || !(smallest > 0) || smallest >= min_gap) return 0;
+    const double pi = 3.14159265358979, max_gap = pi - min_gap;
+    if (k < 3 || !isfinite(sum)) return 0;
+    double largest = 0;
     for (size_t i = 0; i < k; i++)
-        if (!(gap[i] < 3.14159265358979)) return 0;
-    double alpha = 0;
-    for (size_t i = 0; i < k; i++)
+        largest = fmax(largest, gap[i]);
+    if (smallest >= min_gap && largest <= max_gap) return 0;
+    /* A star that does not wind once around n with gaps below pi (only where no valid normal
+     * exists: normals.c) gets equally spaced tangents in its cyclic order (alpha = 1). */
+    int winds = fabs(sum - two_pi) < 1e-9 && largest < pi;
+    /* gap' in [min_gap, pi - min_gap]: a gap near pi splits into two micro corners through
+     * the spoke W - V = (E - V + E' - V) / 3 of nearly opposite vectors, which is as
+     * degenerate (case 1 of tests/smooth/test_g1_degenerate_corner.c: vertex c of a needle). */
+    double alpha = winds ? 0 : 1;
+    for (size_t i = 0; winds && i < k; i++) {
         if (gap[i] < min_gap) alpha = fmax(alpha, (min_gap - gap[i]) / (even - gap[i]));
-    if (!(alpha > 0 && alpha < 1)) return 0;
-    double at = 0, shift = 0, *psi = gap; /* new angles, relative to phi[0] */
-    for (size_t i = 0; i < k; i++) {
-        double g = (1 - alpha) * gap[i] + alpha * even;
-        psi[i] = at;
-        at += g;
+        if (gap[i] > max_gap) alpha = fmax(alpha, (gap[i] - max_gap) / (gap[i] - even));
     }
+    if (!(alpha > 0 && alpha <= 1)) return 0;
+    double at = 0, orig = 0, shift = 0, *psi = gap; /* new angles, relative to phi[0] */
     for (size_t i = 0; i < k; i++) { /* no net rotation: mean change of angle 0 */
-        double dphi = phi[i] - phi[0];
-        if (dphi < 0) dphi += two_pi;
-        shift += (psi[i] - dphi) / (double)k;
+        double g = gap[i];
+        psi[i] = at;
+        shift += (at - orig) / (double)k;
+        at += (1 - alpha) * g + alpha * even;
+        orig += g;
     }
     for (size_t i = 0; i < k; i++) {
-        double *t = tan + 3 * (size_t)ring[i], len = g1_length(t);
+        double *t = tan + 3 * (size_t)ring[i], len = g1_length(t), e[3];
+        if (!winds) { /* the projection may be a point (an edge along n): the edge's length */
+            uint32_t h = ring[i];
+            g1_sub(m->xyz + 3 * m->tri[3 * (h / 3) + (h + 1) % 3], m->xyz + 3 * m->tri[h], e);
+            len = g1_length(e);
+        }
         double a = phi[0] + psi[i] - shift, c = cos(a), sn = sin(a);
         for (int d = 0; d < 3; d++)
             t[d] = len * (c * u[d] + sn * w[d]);
@@ -124,7 +142,7 @@ fl_status g1_edge_tangents(const fl_mesh *m, const double *normals, const uint32
             h = next_around(opp, h);
         } while (h != h0 && k < SPREAD_STAR);
         if (h != h0) continue; /* a star too large to spread */
-        *spread += (size_t)spread_star(normals + 3 * v, ring, k, tan);
+        *spread += (size_t)spread_star(m, normals + 3 * v, ring, k, tan);
     }
     free(seen);
     return FL_OK;

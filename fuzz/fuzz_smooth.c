@@ -119,6 +119,9 @@ static void sm_surface(fz_in *in, uint8_t head)
      * six-split or the two-split instead of the three-split / PN patches. */
     int scheme = (head >> 3) & 1;
     if (head & 2) scheme = scheme ? FL_G1_TWO_SPLIT : FL_G1_SIX_SPLIT;
+    /* Round 9: auto (both schemes built and measured; per component) in place of the
+     * two-split when the top bit (tessellation density) is also set. */
+    if ((head & 2) && scheme == FL_G1_TWO_SPLIT && (head & 128)) scheme = FL_G1_AUTO;
     fl_g1_surface_options o = {scheme, (head >> 4) & 3, (head & 64) ? 0.4 : 0};
     fl_g1_surface s;
     fl_error err;
@@ -140,8 +143,10 @@ static void sm_surface(fz_in *in, uint8_t head)
     }
     FZ_ASSERT(s.vertex_count == nv, "vertex count");
     /* Patches: one (PN), three or six a triangle; a two-split pair has four for its two. */
+    FZ_ASSERT(s.six_split_triangles <= nt, "%zu six-split triangles", s.six_split_triangles);
     size_t want = o.scheme == FL_G1_MACRO       ? nt
                   : o.scheme == FL_G1_SIX_SPLIT ? 6 * nt
+                  : o.scheme == FL_G1_AUTO      ? 3 * nt + 3 * s.six_split_triangles
                                                 : 3 * nt - 2 * s.two_split_pairs;
     FZ_ASSERT(2 * s.two_split_pairs <= nt, "%zu pairs of %zu triangles", s.two_split_pairs, nt);
     FZ_ASSERT(s.patch_count == want, "patch count %zu, expected %zu", s.patch_count, want);

@@ -5,8 +5,8 @@
 #
 # Per mesh (SMOOTH_MESHES, names in bench/cache/cgal/data/meshes), BENCH_ROUNDS processes a
 # side, alternating: bench/tools/smooth_osc MESH auto / pn; the time is the CPU time of
-# fl_g1_surface_build alone (CLOCK_PROCESS_CPUTIME_ID; auto includes its own G1 measurement
-# at 33 points an edge and, where the three-split is not G1, building both schemes), median
+# fl_g1_surface_build alone (CLOCK_PROCESS_CPUTIME_ID; auto includes building both schemes,
+# its own G1 measurement at 33 points an edge and, where both are G1, their deviations), median
 # over the processes; CPU seconds in both time columns. The notes carry what the surfaces
 # measure: max normal jump across patch edges (33 points an edge), folds, max deviation from
 # the mesh and control-point displacement from the PN patches (mean edge lengths).

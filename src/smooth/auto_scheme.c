@@ -12,9 +12,11 @@
  * leaves no seam to prove; the price is that one bad edge puts its whole component on the
  * six-split (whose reflection lines wiggle more on smooth meshes, docs/smooth.md).
  *
- * The decision is measured, not predicted: the three-split is built and its normal jump along
- * every micro and macro edge sampled; only if it exceeds the G1 threshold (or an edge folds, or
- * eq. 9.3a has no solution) is the six-split built and measured too. */
+ * The decision is measured, not predicted: both schemes are built and their normal jumps along
+ * every micro and macro edge sampled (a fold, or eq. 9.3a without solution, also disqualifies);
+ * where both are G1 the one with the smaller max deviation from the mesh is kept (issue #11:
+ * on CGAL's elephant.off the G1 three-split strays 30.5 mean edge lengths, the six-split
+ * 13.6), the three-split on a tie. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -70,11 +72,46 @@ static fl_status try_scheme(const fl_mesh *m, const fl_g1_surface_options *o, in
     return FL_OK;
 }
 
-/* The auto choice on one connected mesh: the three-split, then the six-split, with the
+/* Where both schemes are G1, the one nearer the mesh: max deviation on a grid of this many
+ * segments a patch edge (exact closest points). On CGAL's elephant.off the three-split is G1
+ * but 30.5 mean edge lengths away where the six-split is 13.6 (docs/smooth.md, "Auto"). */
+enum { AUTO_DEVIATION_SAMPLES = 4 };
+
+/* Replaces *s by c (freeing the old one) and records the choice. */
+static void keep(fl_g1_surface *s, fl_g1_surface *c, int six, size_t nt, fl_g1_metrics *best,
+                 const fl_g1_metrics *cm)
+{
+    fl_g1_surface_free(s);
+    *s = *c;
+    memset(c, 0, sizeof *c);
+    s->six_split_triangles = six ? nt : 0;
+    *best = *cm;
+}
+
+/* Both G1 with the same weighting: keeps in *s the one with the smaller max deviation from the
+ * mesh (the three-split, already in *s, on a tie or NaN). */
+static fl_status keep_nearer(const fl_mesh *m, fl_g1_surface *s, fl_g1_surface *six,
+                             fl_error *err)
+{
+    fl_g1_metrics d3 = {0}, d6 = {0};
+    fl_status st = g1_measure_deviation(s, m, AUTO_DEVIATION_SAMPLES, &d3, err);
+    if (!st) st = g1_measure_deviation(six, m, AUTO_DEVIATION_SAMPLES, &d6, err);
+    if (!st && d6.max_deviation < d3.max_deviation) {
+        fl_g1_surface_free(s);
+        *s = *six;
+        memset(six, 0, sizeof *six);
+        s->six_split_triangles = m->triangle_count;
+    }
+    fl_g1_surface_free(six);
+    return st;
+}
+
+/* The auto choice on one connected mesh: the three-split and the six-split, with the
  * requested normal weighting and then with the other two (§9.4 methods 1-3: a different
  * estimate changes which edges are nearly dependent; on CGAL's rotor.off the six-split is
- * G1 with the uniform and inverse weightings, not with area); the first that measures G1,
- * else the best measured. */
+ * G1 with the uniform and inverse weightings, not with area). The first weighting with a G1
+ * scheme decides: if both are G1 the one nearer the mesh (keep_nearer), else the G1 one; with
+ * no G1 scheme at all, the best measured. */
 static fl_status build_component(const fl_mesh *m, const fl_g1_surface_options *o,
                                  fl_g1_surface *s, fl_error *err)
 {
@@ -99,16 +136,20 @@ static fl_status build_component(const fl_mesh *m, const fl_g1_surface_options *
                 return st;
             }
             if (!ok) continue;
+            /* *s is this weighting's G1 three-split: compare deviations */
+            if (k == 1 && have && is_g1(&best) && is_g1(&cm)) {
+                st = keep_nearer(m, s, &c, err);
+                if (st) fl_g1_surface_free(s);
+                return st;
+            }
             if (have && !better(&cm, &best)) {
                 fl_g1_surface_free(&c);
+                if (k == 1 && is_g1(&best)) return FL_OK;
                 continue;
             }
-            fl_g1_surface_free(s);
-            *s = c;
-            s->six_split_triangles = schemes[k] == FL_G1_SIX_SPLIT ? m->triangle_count : 0;
-            best = cm;
+            keep(s, &c, k == 1, m->triangle_count, &best, &cm);
             have = 1;
-            if (is_g1(&best)) return FL_OK;
+            if (k == 1 && is_g1(&best)) return FL_OK;
         }
     if (!have)
         return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1,

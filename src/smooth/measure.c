@@ -123,8 +123,8 @@ static double mean_edge_length(const fl_mesh *mesh)
     return sum / (3.0 * (double)mesh->triangle_count);
 }
 
-static fl_status measure_deviation(const fl_g1_surface *sf, const fl_mesh *mesh, unsigned samples,
-                                   fl_g1_metrics *m, fl_error *err)
+fl_status g1_measure_deviation(const fl_g1_surface *sf, const fl_mesh *mesh, unsigned samples,
+                               fl_g1_metrics *m, fl_error *err)
 {
     fl_sweep *sw = NULL;
     fl_sweep_cursor *cur = NULL;
@@ -161,6 +161,6 @@ fl_status fl_g1_surface_measure(const fl_g1_surface *surface, const fl_mesh *mes
     /* The deviation grid stops at 8 segments a patch edge: it costs samples^2 / 2 closest
      * points a patch, while only the edge jumps need dense sampling (a jump can sit between
      * samples; the distance of a cubic patch from the mesh varies slowly inside it). */
-    if (!st) st = measure_deviation(surface, mesh, samples < 8 ? samples : 8, out, err);
+    if (!st) st = g1_measure_deviation(surface, mesh, samples < 8 ? samples : 8, out, err);
     return st;
 }

@@ -159,9 +159,15 @@ static int repair_one(const fl_mesh *m, uint32_t v, const uint32_t *star, size_t
         if (!(g1_normalize(n) > 0)) return 0;
     }
     if (star_ok(m, v, star, n_star, n, h)) return 1;
-    if (n_star > MAXIMIN_STAR || !(maximin_normal(m, star, n_star, wide) > 0) ||
-        !star_ok(m, v, star, n_star, wide, h))
+    if (n_star > MAXIMIN_STAR) return 0;
+    double score = maximin_normal(m, star, n_star, wide);
+    if (!(score > 0) || !star_ok(m, v, star, n_star, wide, h)) {
+        /* No valid normal (CGAL's elk.off, corner_poly.off): the widest direction is the least
+         * bad one; tangents.c then spreads the boundary tangents into a star that winds once
+         * (docs/smooth.md, "Vertices without a valid normal"). */
+        if (score > -1 && isfinite(score)) memcpy(n, wide, sizeof wide);
         return 0;
+    }
     double lo = 0, hi = 1, c[3];
     for (int it = 0; it < 40; it++) {
         double t = (lo + hi) / 2;

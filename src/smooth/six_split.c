@@ -743,8 +743,8 @@ static void emit_six(const fl_mesh *m, const six_tri *T, const six_edge *edges,
     }
 }
 
-fl_status g1_six_split(const fl_mesh *m, const double *normals, double tension, fl_g1_surface *s,
-                       fl_error *err)
+fl_status g1_six_split(const fl_mesh *m, const double *normals, const double *tan,
+                       double tension, fl_g1_surface *s, fl_error *err)
 {
     size_t nt = m->triangle_count;
     uint32_t *opp = NULL;
@@ -763,8 +763,8 @@ fl_status g1_six_split(const fl_mesh *m, const double *normals, double tension, 
     for (size_t h = 0; h < 3 * nt; h++) {
         if (opp[h] < h) continue;
         uint32_t a = m->tri[h], b = m->tri[3 * (h / 3) + (h + 1) % 3];
-        g1_edge_point(m->xyz + 3 * a, normals + 3 * a, m->xyz + 3 * b, tension, ep[h][0]);
-        g1_edge_point(m->xyz + 3 * b, normals + 3 * b, m->xyz + 3 * a, tension, ep[h][1]);
+        g1_edge_point(m->xyz + 3 * a, tan + 3 * h, tension, ep[h][0]);
+        g1_edge_point(m->xyz + 3 * b, tan + 3 * (size_t)opp[h], tension, ep[h][1]);
         memcpy(ep[opp[h]][0], ep[h][1], sizeof ep[h][1]);
         memcpy(ep[opp[h]][1], ep[h][0], sizeof ep[h][0]);
         edge_id[h] = edge_id[opp[h]] = ne++;

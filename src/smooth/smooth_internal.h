@@ -62,9 +62,16 @@ fl_status g1_require_closed_mesh(const fl_mesh *mesh, fl_error *err);
 fl_status g1_repair_normals(const fl_mesh *mesh, double *normals, size_t *repairs, size_t *failures,
                             fl_error *err);
 
-/* Step 2 (§9.6): q projected on the tangent plane (p, n), a fraction `tension` of the way. */
-void g1_edge_point(const double *p, const double *n, const double *q, double tension,
-                   double *out);
+/* Step 2 (§9.6): the edge point p + tension * tan, tan = the edge from p projected on the
+ * tangent plane at p (g1_edge_tangents). */
+void g1_edge_point(const double *p, const double *tan, double tension, double *out);
+
+/* The tangent of every half-edge at its start vertex (3 doubles a half-edge): the edge
+ * projected on the vertex's tangent plane, rotated within the plane at the vertices whose star
+ * projects onto a corner below 1e-3 rad if spread_corners (tangents.c; *spread counts
+ * them). */
+fl_status g1_edge_tangents(const fl_mesh *m, const double *normals, const uint32_t *opp,
+                           int spread_corners, double *tan, size_t *spread, fl_error *err);
 
 /* (e, f, g) with e d + f l + g r = 0 for d, l, r in the plane with normal n, scaled to
  * f + g = -1; 0 when f + g = 0 (l and r on one side of d). See surface.c. */
@@ -133,8 +140,8 @@ size_t g1_emit_cross_split(const fl_mesh *m, const uint32_t *opp, uint32_t h,
 
 /* The six-split of §9.8 (six_split.c) over a checked mesh with final vertex normals: fills
  * every patch of s (allocated for 6 patches a triangle) and s->singular_edges. */
-fl_status g1_six_split(const fl_mesh *m, const double *normals, double tension, fl_g1_surface *s,
-                       fl_error *err);
+fl_status g1_six_split(const fl_mesh *m, const double *normals, const double *tan,
+                       double tension, fl_g1_surface *s, fl_error *err);
 
 /* fl_g1_surface_build after the mesh check (surface.c); o->scheme may be FL_G1_AUTO. */
 fl_status g1_build_checked(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_surface *s,
@@ -153,5 +160,11 @@ fl_status g1_measure_edges(const fl_g1_surface *sf, unsigned samples, fl_g1_metr
 /* The vertex part of fl_g1_surface_measure (measure.c): interpolation errors at the corners
  * that are mesh vertices; max'ed into m. */
 void g1_measure_vertices(const fl_g1_surface *sf, const fl_mesh *mesh, fl_g1_metrics *m);
+
+/* The deviation part of fl_g1_surface_measure (measure.c): max distance of a grid of `samples`
+ * segments an edge on every patch from the mesh (exact closest points), in mean edge lengths,
+ * into m->max_deviation. */
+fl_status g1_measure_deviation(const fl_g1_surface *sf, const fl_mesh *mesh, unsigned samples,
+                               fl_g1_metrics *m, fl_error *err);
 
 #endif /* FL_SMOOTH_INTERNAL_H */

@@ -41,15 +41,12 @@ void fl_g1_patch_eval(const double *ctrl, double u, double v, double w, double p
 }
 
 
-/* Step 2: the neighbour projected on the tangent plane at p, a fraction `tension` of the way. */
-void g1_edge_point(const double *p, const double *n, const double *q, double tension,
-                       double *out)
+/* Step 2: the neighbour projected on the tangent plane at p (tan, g1_edge_tangents), a
+ * fraction `tension` of the way. */
+void g1_edge_point(const double *p, const double *tan, double tension, double *out)
 {
-    double d[3];
-    g1_sub(q, p, d);
-    double s = g1_dot(d, n);
     for (int k = 0; k < 3; k++)
-        out[k] = p[k] + tension * (d[k] - s * n[k]);
+        out[k] = p[k] + tension * tan[k];
 }
 
 
@@ -98,22 +95,21 @@ static int quadratic_edge(const double *a, const double *na, const double *b, co
 
 /* Step 2 for every half-edge (quadratic where flagged), computed once an edge so the two
  * triangles share bit-identical boundary curves. */
-static void boundary_curves(const fl_mesh *m, const double *normals, double tension,
-                            const uint32_t *opp, const unsigned char *quad, edge_ctrl *ep)
+static void boundary_curves(const fl_mesh *m, const double *normals, const double *tan,
+                            double tension, const uint32_t *opp, const unsigned char *quad,
+                            edge_ctrl *ep)
 {
     for (size_t h = 0; h < 3 * m->triangle_count; h++) {
-        if (opp && opp[h] < h) continue;
+        if (opp[h] < h) continue;
         uint32_t a = m->tri[h], b = m->tri[3 * (h / 3) + (h + 1) % 3];
         const double *pa = m->xyz + 3 * a, *pb = m->xyz + 3 * b;
         edge_ctrl c;
-        g1_edge_point(pa, normals + 3 * a, pb, tension, c.p[0]);
-        g1_edge_point(pb, normals + 3 * b, pa, tension, c.p[1]);
+        g1_edge_point(pa, tan + 3 * h, tension, c.p[0]);
+        g1_edge_point(pb, tan + 3 * (size_t)opp[h], tension, c.p[1]);
         if (quad && quad[h]) quadratic_edge(pa, normals + 3 * a, pb, normals + 3 * b, &c, &c);
         ep[h] = c;
-        if (opp) {
-            memcpy(ep[opp[h]].p[0], c.p[1], sizeof c.p[1]);
-            memcpy(ep[opp[h]].p[1], c.p[0], sizeof c.p[0]);
-        }
+        memcpy(ep[opp[h]].p[0], c.p[1], sizeof c.p[1]);
+        memcpy(ep[opp[h]].p[1], c.p[0], sizeof c.p[0]);
     }
 }
 
@@ -347,7 +343,8 @@ static size_t solve_macro_edges(const fl_mesh *m, const double *normals, macro_n
 
 /* Steps 1-5 of the three-split: rounds of boundary curves, macro patches and edge solves until
  * no further edge needs a quadratic boundary curve. */
-static fl_status three_split_nets(const fl_mesh *m, const double *normals, double tension,
+static fl_status three_split_nets(const fl_mesh *m, const double *normals, const double *tan,
+                                  double tension,
                                   const uint32_t *opp, const uint32_t *pair_edge, edge_ctrl *ep,
                                   macro_net *nets, fl_g1_surface *s, fl_error *err)
 {
@@ -355,7 +352,7 @@ static fl_status three_split_nets(const fl_mesh *m, const double *normals, doubl
     if (!quad) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     int unsolvable = 0;
     for (int round = 0; round < 8; round++) {
-        boundary_curves(m, normals, tension, opp, quad, ep);
+        boundary_curves(m, normals, tan, tension, opp, quad, ep);
         for (size_t t = 0; t < m->triangle_count; t++)
             macro_patch(m, ep, t, nets + t);
         if (pair_edge) g1_pair_spoke_points(opp, pair_edge, m->triangle_count, nets);
@@ -402,24 +399,33 @@ fl_status g1_build_checked(const fl_mesh *m, const fl_g1_surface_options *o, fl_
             g1_repair_normals(m, s->normal, &s->orientation_repairs, &s->orientation_failures, err);
     if (st) return st;
     double tension = o->tension > 0 ? o->tension : 1.0 / 3.0;
-    if (six) return g1_six_split(m, s->normal, tension, s, err);
-    macro_net *nets = fl_alloc_array(nt, sizeof *nets);
-    edge_ctrl *ep = fl_alloc_array(3 * nt, sizeof *ep);
+    macro_net *nets = six ? NULL : fl_alloc_array(nt, sizeof *nets);
+    edge_ctrl *ep = six ? NULL : fl_alloc_array(3 * nt, sizeof *ep);
+    double *tan = fl_alloc_array(3 * nt, 3 * sizeof *tan);
     uint32_t *opp = NULL, *paired = two || cross ? fl_alloc_array(nt, sizeof *paired) : NULL;
-    if (!nets || !ep || ((two || cross) && !paired)) {
+    if ((!six && (!nets || !ep)) || !tan || ((two || cross) && !paired)) {
         free(nets);
         free(ep);
+        free(tan);
         free(paired);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     }
-    if (split) {
-        st = g1_opposite_half_edges(m, &opp, err);
-        if (!st && cross) st = g1_choose_pairs(m, opp, paired, err);
+    st = g1_opposite_half_edges(m, &opp, err);
+    size_t spread = 0;
+    if (!st) st = g1_edge_tangents(m, s->normal, opp, o->scheme != FL_G1_MACRO, tan, &spread, err);
+    if (!st && six) st = g1_six_split(m, s->normal, tan, tension, s, err);
+    if (six) {
+        free(tan);
+        free(opp);
+        return st;
+    }
+    if (!st && split) {
+        if (cross) st = g1_choose_pairs(m, opp, paired, err);
         if (!st)
-            st = three_split_nets(m, s->normal, tension, opp, cross ? paired : NULL, ep, nets, s,
-                                  err);
-    } else {
-        boundary_curves(m, s->normal, tension, NULL, NULL, ep);
+            st = three_split_nets(m, s->normal, tan, tension, opp, cross ? paired : NULL, ep,
+                                  nets, s, err);
+    } else if (!st) {
+        boundary_curves(m, s->normal, tan, tension, opp, NULL, ep);
         for (size_t t = 0; t < nt; t++)
             macro_patch(m, ep, t, nets + t);
     }
@@ -443,6 +449,7 @@ fl_status g1_build_checked(const fl_mesh *m, const fl_g1_surface_options *o, fl_
     if (!st) s->patch_count = np;
     free(nets);
     free(ep);
+    free(tan);
     free(opp);
     free(paired);
     return st;

@@ -1982,6 +1982,16 @@ void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor);
 fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const double *q, size_t nq,
                                     double tolerance, fl_closest *results, fl_error *err);
 
+/* One query through a cursor for the mesh moved by `pose` (§5.2; the pose may change from
+ * call to call), as fl_sweep_cursor_closest_posed: the query is carried into the mesh's frame,
+ * so a mesh moving a little at a time reuses the cursor's refined mesh like a moving query
+ * (§5.1); `point` is in the world frame. FL_ERR_INPUT for a bad pose, otherwise as
+ * fl_sweep_collapse_cursor_closest. */
+fl_status fl_sweep_collapse_cursor_closest_posed(fl_sweep_collapse_cursor *cursor,
+                                                 const fl_sweep_pose *pose, const double *q,
+                                                 double tolerance, fl_closest *result,
+                                                 fl_error *err);
+
 /* The k input triangles nearest to q (§4.4), nearest first, as fl_sweep_knearest: the
  * priority process continues past the first leaf; the cursor keeps the refined mesh, so
  * coherent k-nearest queries reuse it (§5.1). FL_ERR_USAGE for NULL arguments or a bad

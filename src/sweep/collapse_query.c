@@ -429,6 +429,28 @@ fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, con
     return FL_OK;
 }
 
+/* §5.2: "for a rigid motion of the mesh the sizes of the intervals are affected, but the
+ * bounding-volume hierarchy is not". The query is carried into the mesh's frame (rigid.c's
+ * helpers, shared with the spatial cursor), so a moving mesh is a moving query for the cursor:
+ * δ is the move of the carried query, intervals widen by it and fronts are recomputed (§5.1). */
+fl_status fl_sweep_collapse_cursor_closest_posed(fl_sweep_collapse_cursor *cursor,
+                                                 const fl_sweep_pose *pose, const double *q,
+                                                 double tolerance, fl_closest *result,
+                                                 fl_error *err)
+{
+    if (!cursor || !pose || !q || !result)
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1,
+                       "cursor, pose, query and result must not be NULL");
+    fl_status st = fl_sweep_pose_check(3, pose, err);
+    if (st != FL_OK) return st;
+    double local[3];
+    if (!fl_sweep_pose_to_local(3, pose, q, local))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
+    st = fl_sweep_collapse_cursor_closest(cursor, local, tolerance, result, err);
+    if (st == FL_OK) fl_sweep_pose_to_world(pose, result);
+    return st;
+}
+
 typedef struct knearest_out {
     uint32_t *element;
     double *distance;

@@ -1975,6 +1975,11 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
 fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
                                            double tolerance, fl_closest *result, fl_error *err);
 
+/* Makes the next query through the cursor start from the base mesh, as a fresh cursor would
+ * (the cursor does this by itself when coherence stops paying, §5.1: docs/sweep.md); for
+ * callers that know the next query is unrelated. NULL is fine. */
+void fl_sweep_collapse_cursor_reset(fl_sweep_collapse_cursor *cursor);
+
 /* Frees a cursor (NULL is fine). */
 void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor);
 

@@ -398,6 +398,13 @@ void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor)
     free(cursor);
 }
 
+void fl_sweep_collapse_cursor_reset(fl_sweep_collapse_cursor *cursor)
+{
+    if (!cursor) return;
+    cursor->started = 0; /* the next query starts from the base mesh (advance) */
+    cursor->have_ball = 0;
+}
+
 static fl_status check_query(const double *q, fl_error *err)
 {
     for (int i = 0; i < 3; i++)

@@ -181,6 +181,33 @@ static void test_rigid_open_degenerate(void)
     check_rigid(cm_messy(12), "messy", 0);
 }
 
+/* fl_sweep_collapse_cursor_reset: after a walk has refined the mesh, a reset query does exactly
+ * the work of a fresh cursor (same triangles computed) and answers exactly. */
+static void test_reset_matches_fresh(void)
+{
+    fl_mesh m = cm_noisy_torus(30, 12, 0.05);
+    fl_sweep_collapse *h = build(&m);
+    fl_sweep_collapse_cursor *c = NULL;
+    fl_error err = {0};
+    if (h) CHECK_STATUS(fl_sweep_collapse_cursor_new(h, &c, &err), FL_OK, &err);
+    double p[3] = {1.3, 0.0, 0.1};
+    for (int i = 0; c && i < 60; i++) {
+        fl_closest r, f;
+        p[0] += cm_rand(-0.01, 0.01), p[1] += cm_rand(-0.01, 0.01);
+        CHECK_STATUS(fl_sweep_collapse_cursor_closest(c, p, 0.0, &r, &err), FL_OK, &err);
+        if (i % 10 != 9) continue;
+        fl_sweep_collapse_cursor_reset(c);
+        CHECK_STATUS(fl_sweep_collapse_cursor_closest(c, p, 0.0, &r, &err), FL_OK, &err);
+        CHECK_STATUS(fl_sweep_collapse_closest(h, p, 1, 0.0, &f, &err), FL_OK, &err);
+        check_exact(&m, p, &r);
+        CHECK(!r.reused && r.visited == f.visited && r.element == f.element);
+    }
+    fl_sweep_collapse_cursor_reset(NULL);
+    fl_sweep_collapse_cursor_free(c);
+    fl_sweep_collapse_free(h);
+    cm_free(&m);
+}
+
 /* Bad poses and arguments are rejected with the documented codes, and the cursor still answers
  * exactly afterwards. */
 static void test_posed_bad_input(void)
@@ -216,4 +243,4 @@ static void test_posed_bad_input(void)
 FL_TEST_MAIN(FL_TEST_CASE(test_walks_closed), FL_TEST_CASE(test_walks_open),
              FL_TEST_CASE(test_walks_degenerate), FL_TEST_CASE(test_walks_soup),
              FL_TEST_CASE(test_rigid_closed), FL_TEST_CASE(test_rigid_open_degenerate),
-             FL_TEST_CASE(test_posed_bad_input))
+             FL_TEST_CASE(test_reset_matches_fresh), FL_TEST_CASE(test_posed_bad_input))

@@ -8,7 +8,7 @@
  *       fl_sweep_closest (exact answers) on the queries; prints RESULT lines, writes
  *       PREFIX.KIND.ours.d; with "collapse" the edge-collapse hierarchy (fl_sweep_collapse_*)
  *       instead, writing PREFIX.KIND.collapse.d and the hierarchy's bytes; with
- *       "collapse-static" the same hierarchy with every query from the base mesh (the cursor is
+ *       "collapse-static" the same hierarchy with every query from its start level (the cursor is
  *       reset before each: no §5.1 coherence), writing PREFIX.KIND.collapse-static.d
  *   eval_closest compare A.d B.d          prints the largest |difference| of two distance files */
 #define _POSIX_C_SOURCE 200809L
@@ -101,7 +101,7 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* The queries through one cursor reset before each (every query from the base mesh). */
+/* The queries through one cursor reset before each (every query from the start level). */
 static fl_status collapse_static(const fl_sweep_collapse *h, const double *q, size_t n,
                                  fl_closest *r, fl_error *err)
 {
@@ -116,7 +116,7 @@ static fl_status collapse_static(const fl_sweep_collapse *h, const double *q, si
 }
 
 /* One build + query run of the edge-collapse hierarchy (mode 1: one coherent cursor, the
- * library's batch call; mode 2: every query from the base mesh); *bytes gets its size. */
+ * library's batch call; mode 2: every query from the start level); *bytes gets its size. */
 static int run_collapse_once(const fl_mesh *m, const double *q, size_t n, fl_closest *r,
                              int mode, double *build, double *query, size_t *bytes)
 {

@@ -9,7 +9,7 @@
 # §4.2-4.3), run in the same rounds (spatial, collapse, CGAL alternate), with its ratio to the
 # spatial hierarchy and its memory (hierarchy + one cursor) in the notes. On the path stream the
 # collapse process is followed by a `collapse-static` one (the same hierarchy, every query from
-# the base mesh: the cursor reset before each) whose time goes in the path_collapse row's notes,
+# its start level: the cursor reset before each) whose time goes in the path_collapse row's notes,
 # so the §5.1 cursor's gain on the walk is measured in the same rounds.
 #
 # Environment besides lib.sh's: CLOSEST_QUERIES (default 200000), CLOSEST_REPS (default 1),
@@ -65,7 +65,7 @@ one_mesh() { # NAME FILE NOTES
     local static_note=""
     if [ -n "$cs" ]; then
       cs=$(median <<<"${cs%$'\n'}")
-      static_note="; every query from the base mesh (cursor reset, no §5.1) $cs s = $(awk -v o="$cs" -v p="$c" 'BEGIN {printf "%.2f", o / p}') x the cursor"
+      static_note="; every query from the start level (cursor reset before each, no §5.1) $cs s = $(awk -v o="$cs" -v p="$c" 'BEGIN {printf "%.2f", o / p}') x the cursor"
     fi
     printf 'ROW|closest_%s_%s_collapse|%s|CGAL AABB_tree|%s|%s|%s; edge-collapse hierarchy, %s %s queries; %.2f x the spatial hierarchy; distances agree to %s; build collapse %s s, CGAL %s s; %s bytes a triangle (hierarchy + cursor)%s\n' \
       "$name" $kind "$c" "$p" "$(awk -v o="$c" -v p="$p" 'BEGIN {printf "%.2f", o / p}')" "$notes" \

@@ -4,10 +4,12 @@
  *       near    a vertex (random) plus an offset up to 1 % of the diagonal, random order
  *       path    a random walk of N steps of 0.05 % of the diagonal through the box, reflected
  *               at its faces: each query close to the last, the coherent case of §3.3 / §5.1
- *   eval_closest run PREFIX KIND [REPS] [collapse]   times the hierarchy's build and
+ *   eval_closest run PREFIX KIND [REPS] [collapse|collapse-static]   times the hierarchy's build and
  *       fl_sweep_closest (exact answers) on the queries; prints RESULT lines, writes
  *       PREFIX.KIND.ours.d; with "collapse" the edge-collapse hierarchy (fl_sweep_collapse_*)
- *       instead, writing PREFIX.KIND.collapse.d and the hierarchy's bytes
+ *       instead, writing PREFIX.KIND.collapse.d and the hierarchy's bytes; with
+ *       "collapse-static" the same hierarchy with every query from its start level (the cursor is
+ *       reset before each: no §5.1 coherence), writing PREFIX.KIND.collapse-static.d
  *   eval_closest compare A.d B.d          prints the largest |difference| of two distance files */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -99,9 +101,24 @@ static int cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* One build + query run of the edge-collapse hierarchy; *bytes gets its size. */
+/* The queries through one cursor reset before each (every query from the start level). */
+static fl_status collapse_static(const fl_sweep_collapse *h, const double *q, size_t n,
+                                 fl_closest *r, fl_error *err)
+{
+    fl_sweep_collapse_cursor *c;
+    fl_status st = fl_sweep_collapse_cursor_new(h, &c, err);
+    for (size_t i = 0; i < n && st == FL_OK; i++) {
+        fl_sweep_collapse_cursor_reset(c);
+        st = fl_sweep_collapse_cursor_closest(c, q + 3 * i, 0, r + i, err);
+    }
+    fl_sweep_collapse_cursor_free(c);
+    return st;
+}
+
+/* One build + query run of the edge-collapse hierarchy (mode 1: one coherent cursor, the
+ * library's batch call; mode 2: every query from the start level); *bytes gets its size. */
 static int run_collapse_once(const fl_mesh *m, const double *q, size_t n, fl_closest *r,
-                             double *build, double *query, size_t *bytes)
+                             int mode, double *build, double *query, size_t *bytes)
 {
     fl_error err;
     fl_sweep_collapse *h;
@@ -112,7 +129,8 @@ static int run_collapse_once(const fl_mesh *m, const double *q, size_t n, fl_clo
     }
     *build = ce_now() - t0;
     t0 = ce_now();
-    if (fl_sweep_collapse_closest(h, q, n, 0, r, &err)) {
+    if ((mode == 2 ? collapse_static(h, q, n, r, &err)
+                   : fl_sweep_collapse_closest(h, q, n, 0, r, &err)) != FL_OK) {
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
@@ -139,7 +157,7 @@ static int run(const char *prefix, const char *kind, int reps, int collapse)
     double *build = malloc(reps * sizeof *build), *query = malloc(reps * sizeof *query);
     size_t bytes = 0;
     for (int k = 0; k < reps && collapse; k++)
-        if (run_collapse_once(&m, q, n, r, build + k, query + k, &bytes)) return 1;
+        if (run_collapse_once(&m, q, n, r, collapse, build + k, query + k, &bytes)) return 1;
     for (int k = 0; k < reps && !collapse; k++) {
         fl_sweep *sw;
         double t0 = ce_now();
@@ -164,10 +182,12 @@ static int run(const char *prefix, const char *kind, int reps, int collapse)
         d[i] = r[i].distance;
         reused += r[i].reused;
     }
-    ce_write_distances(prefix, kind, collapse ? "collapse" : "ours", d, n);
+    const char *tag[] = {"ours", "collapse", "collapse-static"};
+    ce_write_distances(prefix, kind, tag[collapse], d, n);
     printf("RESULT method=flintstone%s kind=%s queries=%zu build_s=%.6f query_s=%.6f reused=%zu "
            "bytes_per_triangle=%.1f\n",
-           collapse ? "_collapse" : "", kind, n, build[reps / 2], query[reps / 2], reused,
+           collapse == 2 ? "_collapse_static" : collapse ? "_collapse" : "", kind, n,
+           build[reps / 2], query[reps / 2], reused,
            (double)bytes / (double)m.triangle_count);
     free(d);
     free(r);
@@ -202,9 +222,12 @@ int main(int argc, char **argv)
         return prepare(argv[2], argv[3], (size_t)atol(argv[4]));
     if (argc >= 4 && strcmp(argv[1], "run") == 0)
         return run(argv[2], argv[3], argc > 4 ? atoi(argv[4]) : 3,
-                   argc > 5 && strcmp(argv[5], "collapse") == 0);
+                   argc <= 5                                    ? 0
+                   : strcmp(argv[5], "collapse") == 0        ? 1
+                   : strcmp(argv[5], "collapse-static") == 0 ? 2
+                                                             : 0);
     if (argc >= 4 && strcmp(argv[1], "compare") == 0) return compare(argv[2], argv[3]);
-    fprintf(stderr, "usage: eval_closest prepare MESH PREFIX N | run PREFIX KIND [REPS] [collapse] | "
-                    "compare A.d B.d\n");
+    fprintf(stderr, "usage: eval_closest prepare MESH PREFIX N | "
+                    "run PREFIX KIND [REPS] [collapse|collapse-static] | compare A.d B.d\n");
     return 2;
 }

@@ -1975,12 +1975,27 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
 fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
                                            double tolerance, fl_closest *result, fl_error *err);
 
+/* Makes the next query through the cursor start from the base mesh, as a fresh cursor would
+ * (the cursor does this by itself when coherence stops paying, §5.1: docs/sweep.md); for
+ * callers that know the next query is unrelated. NULL is fine. */
+void fl_sweep_collapse_cursor_reset(fl_sweep_collapse_cursor *cursor);
+
 /* Frees a cursor (NULL is fine). */
 void fl_sweep_collapse_cursor_free(fl_sweep_collapse_cursor *cursor);
 
 /* Answers nq queries (3 doubles each) in order through one cursor, as fl_sweep_closest. */
 fl_status fl_sweep_collapse_closest(const fl_sweep_collapse *hierarchy, const double *q, size_t nq,
                                     double tolerance, fl_closest *results, fl_error *err);
+
+/* One query through a cursor for the mesh moved by `pose` (§5.2; the pose may change from
+ * call to call), as fl_sweep_cursor_closest_posed: the query is carried into the mesh's frame,
+ * so a mesh moving a little at a time reuses the cursor's refined mesh like a moving query
+ * (§5.1); `point` is in the world frame. FL_ERR_INPUT for a bad pose, otherwise as
+ * fl_sweep_collapse_cursor_closest. */
+fl_status fl_sweep_collapse_cursor_closest_posed(fl_sweep_collapse_cursor *cursor,
+                                                 const fl_sweep_pose *pose, const double *q,
+                                                 double tolerance, fl_closest *result,
+                                                 fl_error *err);
 
 /* The k input triangles nearest to q (§4.4), nearest first, as fl_sweep_knearest: the
  * priority process continues past the first leaf; the cursor keeps the refined mesh, so

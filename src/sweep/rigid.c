@@ -16,7 +16,7 @@
  * distances by at most about this much relative, within the accuracy the tests ask for. */
 #define POSE_ORTHONORMAL_TOL 1e-12
 
-static fl_status check_pose(const fl_sweep *s, const fl_sweep_pose *pose, fl_error *err)
+fl_status fl_sweep_pose_check(int dim, const fl_sweep_pose *pose, fl_error *err)
 {
     for (int i = 0; i < 9; i++)
         if (!isfinite(pose->r[i]))
@@ -36,30 +36,27 @@ static fl_status check_pose(const fl_sweep *s, const fl_sweep_pose *pose, fl_err
                                fabs(dot - (i == j)));
         }
     /* A 2D shape lives in z = 0 and must stay there. */
-    if (s->dim == 2 && (pose->r[2] != 0 || pose->r[5] != 0 || pose->r[6] != 0 ||
-                        pose->r[7] != 0 || pose->t[2] != 0))
+    if (dim == 2 && (pose->r[2] != 0 || pose->r[5] != 0 || pose->r[6] != 0 || pose->r[7] != 0 ||
+                     pose->t[2] != 0))
         return fl_fail(err, FL_ERR_INPUT, NULL, -1,
                        "a 2D pose must keep the plane z = 0 (r[2] = r[5] = r[6] = r[7] = t[2] = 0)");
     return FL_OK;
 }
 
-/* q (dim doubles, world frame) into the shape's frame: Rᵀ (q − t), dim doubles. */
-static int to_shape_frame(const fl_sweep *s, const fl_sweep_pose *pose, const double *q,
-                          double *local)
+int fl_sweep_pose_to_local(int dim, const fl_sweep_pose *pose, const double *q, double *local)
 {
     double w[3];
     for (int c = 0; c < 3; c++) {
-        double x = c < s->dim ? q[c] : 0;
+        double x = c < dim ? q[c] : 0;
         if (!fl_sweep_coord_ok(x)) return 0;
         w[c] = x - pose->t[c];
     }
-    for (int c = 0; c < s->dim; c++)
+    for (int c = 0; c < dim; c++)
         local[c] = pose->r[c] * w[0] + pose->r[3 + c] * w[1] + pose->r[6 + c] * w[2];
     return 1;
 }
 
-/* The answer's point back to the world frame: R p + t (NaN stays NaN). */
-static void to_world(const fl_sweep_pose *pose, fl_closest *r)
+void fl_sweep_pose_to_world(const fl_sweep_pose *pose, fl_closest *r)
 {
     double p[3];
     for (int c = 0; c < 3; c++)
@@ -77,13 +74,13 @@ fl_status fl_sweep_cursor_closest_posed(fl_sweep_cursor *cursor, const fl_sweep_
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "cursor, pose, query and result must not be NULL");
     const fl_sweep *sweep = fl_sweep_cursor_sweep(cursor);
-    fl_status st = check_pose(sweep, pose, err);
+    fl_status st = fl_sweep_pose_check(sweep->dim, pose, err);
     if (st != FL_OK) return st;
     double local[3];
-    if (!to_shape_frame(sweep, pose, q, local))
+    if (!fl_sweep_pose_to_local(sweep->dim, pose, q, local))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1, "query point is not finite or beyond 1e150");
     st = fl_sweep_cursor_closest(cursor, local, tolerance, result, err);
-    if (st == FL_OK) to_world(pose, result);
+    if (st == FL_OK) fl_sweep_pose_to_world(pose, result);
     return st;
 }
 

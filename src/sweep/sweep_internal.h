@@ -86,6 +86,14 @@ static inline double fl_sweep_query_slack(const fl_sweep *s, const double *q3)
  * exceeds FL_SWEEP_MAX_COORD. */
 int fl_sweep_lift_query(const fl_sweep *s, const double *q, double *q3);
 
+/* Rigid motion (rigid.c, §5.2), shared by the spatial and the edge-collapse cursors: checks a
+ * pose for a shape of dimension dim (FL_ERR_INPUT with a message); carries a world query (dim
+ * doubles) into the shape's frame, Rᵀ (q − t), 0 if a coordinate is not finite or beyond
+ * FL_SWEEP_MAX_COORD; carries an answer's point back to the world frame, R p + t. */
+fl_status fl_sweep_pose_check(int dim, const fl_sweep_pose *pose, fl_error *err);
+int fl_sweep_pose_to_local(int dim, const fl_sweep_pose *pose, const double *q, double *local);
+void fl_sweep_pose_to_world(const fl_sweep_pose *pose, fl_closest *r);
+
 /* The hierarchy a cursor searches (query.c). */
 const fl_sweep *fl_sweep_cursor_sweep(const fl_sweep_cursor *cursor);
 

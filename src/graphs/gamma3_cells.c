@@ -2,18 +2,20 @@
  * "Certifying far cell pairs", Lemma C; thesis ch. 3, Lemma 3.2).
  *
  * The per-pair search of gamma3_edges.c drops a long pair ab after a few points near its
- * midpoint m: a point q with |q - m| <= l/2 (l = |ab|/2) lies in the lens N_γ(-κ,-κ) of every
- * triangle abc whose third vertex c is within the azimuth atan(1/s) of q around ab. Lemma C
- * makes that uniform over a cell pair A x B: every pair's midpoint lies in the box (A + B)/2
- * (centre m0, radius rho), its direction within alpha = asin((rA + rB)/D) of the centres'
- * direction e0, and l >= l_min = gap(A, B)/2. A point q with rho < |q - m0| <= l_min/2 - rho
- * then kills, for every pair, the third-vertex directions within 3D angle
- * atan(1/s) - asin(rho/|q - m0|) of the direction of q - m0; the perpendicular directions of
- * every pair lie within alpha of the great circle normal to e0, which is sampled by K test
- * directions. When every test direction is covered (with alpha and half the sampling step
- * subtracted) no pair of A x B is the shortest edge of an accepted triangle, so the whole
- * cell pair is skipped. Everything not certified goes through the unchanged per-pair scan and
- * the exact check, so the output is the brute force's bit for bit.
+ * midpoint m: with l = |ab|/2, a point q with f_q = (|q-m|^2 - l^2) / (2 r_q) <= F l lies in the
+ * lens N_γ(-κ,-κ) of every triangle abc (ab shortest) whose third vertex is within the azimuth
+ * theta(F) <= atan(1/s) of q around ab. Lemma C makes that uniform over a cell pair A x B:
+ * every pair's midpoint lies in the box (A + B)/2 (centre m0, radius rho), its direction within
+ * alpha = asin((rA + rB)/D) of the centres' direction e0, and l >= l_min = gap(A, B)/2. Then
+ * |q - m| <= |q - m0| + rho, and the component of q - m normal to the pair moves by at most
+ * eps = rho + sin(alpha) |q - m0| from that of q - m0 normal to e0 (radius r0), so its azimuth
+ * moves by at most asin(eps / r0); a bound F for every pair follows from l >= l_min. The
+ * azimuths normal to each pair are within alpha of the circle normal to e0, sampled by
+ * G3C_DIRS test directions: when every test direction lies within
+ * theta(F) - asin(eps / r0) - alpha - step/2 of some q, no pair of A x B is the shortest edge of
+ * an accepted triangle and the whole cell pair is skipped. Everything not certified goes
+ * through the unchanged per-pair scan and the exact check, so the output is the brute force's
+ * bit for bit.
  *
  * The pairs are enumerated by a dual-tree recursion over a kd-tree of the points (boxes split
  * at the median of their longest side): well-separated node pairs try the certificate, the
@@ -25,11 +27,11 @@
 #include "graphs/gamma3_search.h"
 
 #define G3C_PI 3.14159265358979323846
-#define G3C_DIRS 64          /* test directions on the great circle normal to e0 */
-#define G3C_LEAF 8           /* points per kd-tree leaf */
-#define G3C_SEPARATION 0.12  /* try the certificate when rA + rB <= this * D */
-#define G3C_MIN_PAIRS 16     /* smaller cell pairs go straight to the per-pair scan */
-#define G3C_MAX_VISITS 160   /* a certificate gives up after this many points */
+#define G3C_DIRS 128          /* test directions on the great circle normal to e0 */
+#define G3C_LEAF 8            /* points per kd-tree leaf */
+#define G3C_SEPARATION 0.2    /* try the certificate when rA + rB <= this * D */
+#define G3C_MIN_PAIRS 16      /* smaller cell pairs go straight to the per-pair scan */
+#define G3C_MAX_VISITS 200    /* a certificate gives up after this many points */
 #define G3C_ANGLE_MARGIN 1e-6 /* radians, against the rounding of the angles */
 
 static double dot3(const double *x, const double *y)
@@ -82,9 +84,12 @@ static void cover_arc(g3c_cover *c, double theta, double w)
 /* The geometry of a cell pair shared by its certificate's points. */
 typedef struct g3c_pair {
     double m0[3], e0[3], u1[3], u2[3];
-    double rho;   /* radius of the midpoint box around m0 */
-    double base;  /* atan(1/s) - alpha - step/2 - margin */
-    double dmin, reach; /* useful |q - m0| range */
+    double rho;    /* radius of the midpoint box around m0 */
+    double l_min;  /* the smallest half-length of a pair */
+    double beta0;  /* atan(1/s): the widest arc a point can kill */
+    double R, omega; /* cos(phi) - 2 s sin(phi) = R cos(phi + omega) */
+    double slack;  /* alpha + step/2 + margin */
+    double sin_alpha;
 } g3c_pair;
 
 /* Sets up the pair; 0 when the certificate cannot hold (too close, too wide, not finite). */
@@ -104,38 +109,48 @@ static int pair_init(g3c_pair *P, double s, const double *loA, const double *hiA
     }
     /* Rounding: the radii are taken 1e-9 larger, D and l_min 1e-9 smaller (relative). */
     double rAB = (sqrt(dot3(hA, hA)) + sqrt(dot3(hB, hB))) * (1 + 1e-9) * uncertainty;
-    double D = sqrt(dot3(d, d)) * (1 - 1e-9), l_min = 0.5 * sqrt(gap2) * (1 - 1e-9);
+    double D = sqrt(dot3(d, d)), l_min = 0.5 * sqrt(gap2) * (1 - 1e-9);
     if (!(D > 0) || !isfinite(D) || !isfinite(rAB) || !(l_min > 0)) return 0;
-    double sin_alpha = rAB / D;
+    double sin_alpha = rAB / (D * (1 - 1e-9));
     if (!(sin_alpha < 0.5)) return 0;
-    double alpha = asin(sin_alpha), step = 2 * G3C_PI / G3C_DIRS;
-    P->base = atan(1 / s) - alpha - 0.5 * step - G3C_ANGLE_MARGIN;
+    P->sin_alpha = sin_alpha;
+    P->slack = asin(sin_alpha) + G3C_PI / G3C_DIRS + G3C_ANGLE_MARGIN;
+    P->beta0 = atan(1 / s);
+    P->R = sqrt(1 + 4 * s * s);
+    P->omega = atan(2 * s);
     P->rho = 0.5 * rAB;
-    P->reach = 0.5 * l_min - P->rho;
-    if (!(P->base > 0) || !(P->reach > 0)) return 0;
-    P->dmin = P->rho / sin(P->base);
-    if (!(P->reach > P->dmin)) return 0;
+    P->l_min = l_min;
+    if (!(P->beta0 > P->slack) || !(P->rho < l_min)) return 0;
     for (int k = 0; k < 3; k++)
-        P->e0[k] = d[k] / (D / (1 - 1e-9));
+        P->e0[k] = d[k] / D;
     gamma3_frame(P->e0, P->u1, P->u2);
     return 1;
 }
 
-/* Adds the directions point q kills for every pair of the cell pair. */
+/* The azimuth around a pair within which q kills every third vertex when f_q / l <= F
+ * (Lemma C): cos(phi) - 2 s sin(phi) > sqrt(3) F, capped at atan(1/s); 0 when none. */
+static double kill_angle(const g3c_pair *P, double F)
+{
+    double c = sqrt(3.0) * F / P->R;
+    if (!(c < 1)) return 0;
+    double theta = c <= -1 ? P->beta0 : acos(c) - P->omega;
+    return fmin(theta, P->beta0);
+}
+
+/* Adds the test directions point q kills for every pair of the cell pair. */
 static void cover_point(g3c_cover *c, const g3c_pair *P, const double *q)
 {
     double v[3] = {q[0] - P->m0[0], q[1] - P->m0[1], q[2] - P->m0[2]};
-    double d0 = sqrt(dot3(v, v));
-    if (!(d0 > P->dmin && d0 <= P->reach)) return;
-    /* For every midpoint m of the box, the direction of q - m is within asin(rho/d0) of v's. */
-    double bq = P->base - asin(P->rho / d0);
-    if (!(bq > 0)) return;
-    double x1 = dot3(v, P->u1), x2 = dot3(v, P->u2);
-    double ce = sqrt(x1 * x1 + x2 * x2) / d0; /* cosine of v's elevation over the circle */
-    double cb = cos(bq);
-    if (!(ce > cb)) return;
-    /* Angle to theta_j on the circle: cos = ce cos(theta - theta_j) > cos(bq). */
-    double w = acos(cb / ce) - G3C_ANGLE_MARGIN;
+    double d0 = sqrt(dot3(v, v)), x1 = dot3(v, P->u1), x2 = dot3(v, P->u2);
+    double r0 = sqrt(x1 * x1 + x2 * x2);
+    double d = (d0 + P->rho) * (1 + 1e-9); /* |q - m| for every pair */
+    if (!(d < P->l_min)) return;
+    /* The component of q - m normal to e moves by at most eps from (x1, x2): rho from the
+     * midpoint, sin(alpha) d0 from the direction. */
+    double eps = (P->rho + P->sin_alpha * d0) * (1 + 1e-9);
+    if (!(r0 > eps)) return;
+    double F = (d * d - P->l_min * P->l_min) / (2 * (r0 + eps) * P->l_min); /* >= f_q / l */
+    double w = kill_angle(P, F) - asin(eps / r0) - P->slack;
     if (!(w > 0)) return;
     cover_arc(c, atan2(x2, x1), w);
 }
@@ -161,7 +176,7 @@ int gamma3_cell_certify(const graph_grid *grid, double s, const double *loA, con
             cover_point(&c, &P, grid->coords + 3 * (size_t)items[i]);
         ok = c.left == 0;
         /* Rings 0..r hold every point closer than r * cell: nothing useful is left. */
-        if ((double)r * grid->cell > P.reach) break;
+        if ((double)r * grid->cell > P.l_min) break;
     }
     fl_vec_free(&ring);
     if (visits) *visits += seen;

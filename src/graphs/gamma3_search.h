@@ -14,7 +14,7 @@ typedef enum gamma3_pairs {
 } gamma3_pairs;
 
 /* What gamma3_edge_triangles uses (docs/gamma.md, "Certifying far cell pairs"). */
-#define GAMMA3_DEFAULT_PAIRS GAMMA3_CELL_PAIRS
+#define GAMMA3_DEFAULT_PAIRS GAMMA3_ALL_PAIRS
 
 /* Counters of one search (for tests and measurements). */
 typedef struct gamma3_stats {

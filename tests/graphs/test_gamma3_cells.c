@@ -3,14 +3,15 @@
  *
  * 1. The dual-tree path hands every pair exactly once to the per-pair scan or to a certified
  *    cell pair, and its triangles and (c0', c1') equal the Theorem 3.1 brute force's, on a set
- *    built so that the certificate fires on many cell pairs (two far clusters with a cloud of
- *    points around their midpoint) and on sets where it never fires.
+ *    built so that the certificate fires on several cell pairs (two far rows of points with a
+ *    disk of points around their midpoints) and on sets where it never fires.
  * 2. Lemma C itself: whenever gamma3_cell_certify accepts two boxes, no pair (a, b) of their
  *    points is the shortest edge of a non-Delaunay triangle with c1' >= -kappa (checked with the
- *    O(N) public fl_gamma_simplex_params for every such triangle). The configurations are wide
- *    boxes with a thin ring of blocking points, where the direction and midpoint uncertainty
- *    decide: the same check finds violations when the uncertainty term is dropped
- *    (uncertainty = 0), so it would catch a certificate made too aggressive. */
+ *    O(N) public fl_gamma_simplex_params for every such triangle). Narrow boxes are certified;
+ *    wide boxes with a ring of blocking points are where the uncertainty terms decide: the
+ *    check finds violations with uncertainty = 0, and (tried by hand) also when only the
+ *    azimuth term asin(eps / r0) or only rho in eps is dropped from the code, so it catches a
+ *    certificate made too aggressive that way. Dropping only alpha is not caught here. */
 #include "gamma_oracle.h"
 
 #include "graphs/gamma3_search.h"
@@ -152,24 +153,25 @@ static void box_of(const double *p, size_t i0, size_t i1, double *lo, double *hi
         }
 }
 
-/* One configuration: A = {(-1, +-w, 0)}, B = {(1, +-w, 0)} (jittered), a ring of 7 blocking
+/* One configuration: A = {(-L, +-w, 0)}, B = {(L, +-w, 0)} (jittered), a ring of nk blocking
  * points of radius rr in the plane x = 0 whose widest gap (`gap` degrees, the others equal)
  * faces +y, and a far third vertex on +y. Seen from the boxes' centre the ring covers
- * every azimuth when gap < 57°; seen from the midpoint (0, w, 0) of the pair (-1, w, 0),
- * (1, w, 0) the gap opens, and the far vertex can make an accepted triangle. */
-static size_t lemma_c_config(double *p, double w, double rr, double gap, unsigned long long *s)
+ * every azimuth when gap < 57°; seen from the midpoint (0, w, 0) of the pair (-L, w, 0),
+ * (L, w, 0) the gap opens, and the far vertex can make an accepted triangle. */
+static size_t lemma_c_config(double *p, double L, double w, int nk, double rr, double gap,
+                             unsigned long long *s)
 {
     const double deg = 3.14159265358979 / 180;
     size_t n = 0;
     for (int side = -1; side <= 1; side += 2)
         for (int k = -1; k <= 1; k += 2) {
-            p[3 * n] = side + 0.01 * (2 * fl_test_rand01(s) - 1);
+            p[3 * n] = side * L + 0.01 * (2 * fl_test_rand01(s) - 1);
             p[3 * n + 1] = k * w + 0.01 * w * (2 * fl_test_rand01(s) - 1);
             p[3 * n + 2] = 0.01 * w * (2 * fl_test_rand01(s) - 1);
             n++;
         }
-    double other = (360 - gap) / 6;
-    for (int i = 0; i < 7; i++) {
+    double other = (360 - gap) / (nk - 1);
+    for (int i = 0; i < nk; i++) {
         double t = (90 + gap / 2 + i * other) * deg; /* azimuth in the (y, z) plane */
         p[3 * n] = 0.02 * (2 * fl_test_rand01(s) - 1);
         p[3 * n + 1] = rr * cos(t);
@@ -178,7 +180,7 @@ static size_t lemma_c_config(double *p, double w, double rr, double gap, unsigne
     }
     /* The far vertex c, and two points above and below the middle of abc that leave no empty
      * ball (so abc is non-Delaunay) but stay outside its lens N_γ(-1/2,-1/2). */
-    double y = 20 + 20 * fl_test_rand01(s);
+    double y = L * L * (20 + 20 * fl_test_rand01(s));
     const double far[3][3] = {{0, y, 0}, {0, y / 2, y / 4}, {0, y / 2, -y / 4}};
     for (int i = 0; i < 3; i++) {
         for (int k = 0; k < 3; k++)
@@ -193,14 +195,17 @@ static void test_gamma3_cells_lemma_c_holds_and_needs_uncertainty(void)
     size_t certified[2] = {0, 0}, violations[2] = {0, 0};
     unsigned long long s = 2024;
     double gg = 1 / (1 - kappa), sq = sqrt(gg * gg - 1);
-    for (int trial = 0; trial < 60; trial++) {
+    for (int trial = 0; trial < 90; trial++) {
         /* Narrow boxes (w small) are where the proved certificate fires; wide ones are where
-         * only the uncertainty term stops it. */
-        double w = trial % 2 ? 0.005 + 0.02 * fl_test_rand01(&s)
-                             : 0.25 + 0.1 * fl_test_rand01(&s);
-        double rr = 0.15 + 0.1 * fl_test_rand01(&s), gap = 50 + 6 * fl_test_rand01(&s);
-        double p[3 * 14];
-        size_t n = lemma_c_config(p, w, rr, gap, &s);
+         * only the uncertainty terms stop it: with L = 1 the direction term alpha is large,
+         * with L = 10 alpha is small and the midpoint term rho decides. */
+        int kind = trial % 3, nk = kind == 0 ? 9 : 7;
+        double L = kind == 2 ? 10 : 1;
+        double w = kind == 0 ? 0.002 + 0.003 * fl_test_rand01(&s) : 0.25 + 0.1 * fl_test_rand01(&s);
+        double rr = (kind == 2 ? 0.4 : 0.15) + 0.1 * fl_test_rand01(&s);
+        double gap = kind == 0 ? 40 : 50 + 6 * fl_test_rand01(&s);
+        double p[3 * 16];
+        size_t n = lemma_c_config(p, L, w, nk, rr, gap, &s);
         double loA[3], hiA[3], loB[3], hiB[3];
         box_of(p, 0, 2, loA, hiA);
         box_of(p, 2, 4, loB, hiB);

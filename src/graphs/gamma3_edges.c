@@ -26,7 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "graphs/gamma_internal.h"
+#include "graphs/gamma3_search.h"
 
 #define G3_PI 3.14159265358979323846
 #define G3_BINS_PER_ARC 8 /* bins per blocking half-arc atan(1/s) */
@@ -78,21 +78,7 @@ static int edge_init(g3_edge *E, const double *xyz, uint32_t a, uint32_t b)
     if (!(len > 0) || !isfinite(E->len2)) return 0;
     for (int k = 0; k < 3; k++)
         E->e[k] = d[k] / len;
-    /* u1: e crossed with the axis of e's smallest component, u2 = e x u1. */
-    int s = 0;
-    for (int k = 1; k < 3; k++)
-        if (fabs(E->e[k]) < fabs(E->e[s])) s = k;
-    double axis[3] = {0, 0, 0};
-    axis[s] = 1;
-    E->u1[0] = E->e[1] * axis[2] - E->e[2] * axis[1];
-    E->u1[1] = E->e[2] * axis[0] - E->e[0] * axis[2];
-    E->u1[2] = E->e[0] * axis[1] - E->e[1] * axis[0];
-    double l1 = sqrt(dot3(E->u1, E->u1));
-    for (int k = 0; k < 3; k++)
-        E->u1[k] /= l1;
-    E->u2[0] = E->e[1] * E->u1[2] - E->e[2] * E->u1[1];
-    E->u2[1] = E->e[2] * E->u1[0] - E->e[0] * E->u1[2];
-    E->u2[2] = E->e[0] * E->u1[1] - E->e[1] * E->u1[0];
+    gamma3_frame(E->e, E->u1, E->u2);
     return 1;
 }
 
@@ -246,8 +232,35 @@ static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
     return 0;
 }
 
+/* The per-pair callback of gamma3_cell_pairs, with the progress report. */
+typedef struct g3_run {
+    g3_ctx *c;
+    graph_builder *out;
+    fl_progress_fn progress;
+    void *user;
+    size_t done, total;
+} g3_run;
+
+static int run_pair(void *user, uint32_t a, uint32_t b)
+{
+    g3_run *run = user;
+    if ((++run->done & 0xffff) == 0 &&
+        fl_progress(run->progress, run->user, "gamma triangles",
+                    fmin(1.0, (double)run->done / (double)run->total)))
+        return -2;
+    return edge_triangles(run->c, a, b, run->out);
+}
+
 fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p, double kappa,
                                 const fl_graph_options *opt, graph_builder *b, fl_error *err)
+{
+    return gamma3_edge_triangles_with(grid, p, kappa, opt, GAMMA3_DEFAULT_PAIRS, b, NULL, err);
+}
+
+fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_params *p,
+                                     double kappa, const fl_graph_options *opt,
+                                     gamma3_pairs pairs, graph_builder *b, gamma3_stats *stats,
+                                     fl_error *err)
 {
     fl_progress_fn progress = opt ? opt->progress : NULL;
     void *user = opt ? opt->progress_user : NULL;
@@ -287,17 +300,23 @@ fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p
     fl_vec_init(&c.seen, sizeof(uint32_t));
     fl_vec_init(&c.scan, sizeof(uint32_t));
     fl_status st = FL_OK;
-    for (uint32_t i = 0; i < c.n && st == FL_OK; i++) {
-        double done = 1 - pow(1 - (double)i / (double)c.n, 2);
-        if (fl_progress(progress, user, "gamma triangles", done)) {
-            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
-            break;
-        }
-        for (uint32_t j = i + 1; j < c.n; j++)
-            if (edge_triangles(&c, i, j, b) < 0) {
-                st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+    if (pairs == GAMMA3_CELL_PAIRS) {
+        g3_run run = {&c, b, progress, user, 0, c.n * (c.n - 1) / 2};
+        st = gamma3_cell_pairs(grid, c.s, run_pair, &run, stats, err);
+    } else {
+        for (uint32_t i = 0; i < c.n && st == FL_OK; i++) {
+            double done = 1 - pow(1 - (double)i / (double)c.n, 2);
+            if (fl_progress(progress, user, "gamma triangles", done)) {
+                st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
                 break;
             }
+            for (uint32_t j = i + 1; j < c.n; j++)
+                if (edge_triangles(&c, i, j, b) < 0) {
+                    st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+                    break;
+                }
+            if (stats) stats->pairs_scanned += c.n - 1 - i;
+        }
     }
     fl_vec_free(&c.seen);
     fl_vec_free(&c.scan);

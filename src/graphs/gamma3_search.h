@@ -1,0 +1,53 @@
+/* Internal interface between the two halves of the 3D shortest-edge search (docs/gamma.md,
+ * "Construction", 3D): gamma3_edges.c (the per-pair lens scan and the exact checks) and
+ * gamma3_cells.c (the cell-pair certificate that drops whole groups of far pairs at once,
+ * "Certifying far cell pairs"). Not part of the public API. */
+#ifndef FL_GAMMA3_SEARCH_H
+#define FL_GAMMA3_SEARCH_H
+
+#include "graphs/gamma_internal.h"
+
+/* Which vertex pairs go through the per-pair scan. */
+typedef enum gamma3_pairs {
+    GAMMA3_ALL_PAIRS = 0, /* every one of the N(N-1)/2 pairs */
+    GAMMA3_CELL_PAIRS = 1 /* a dual-tree recursion; certified cell pairs are skipped */
+} gamma3_pairs;
+
+/* What gamma3_edge_triangles uses (docs/gamma.md, "Certifying far cell pairs"). */
+#define GAMMA3_DEFAULT_PAIRS GAMMA3_ALL_PAIRS
+
+/* Counters of one search (for tests and measurements). */
+typedef struct gamma3_stats {
+    size_t pairs_scanned;   /* pairs handed to the per-pair scan */
+    size_t pairs_certified; /* pairs inside certified cell pairs (never scanned) */
+    size_t cert_tries, cert_ok;
+    size_t cert_visits;     /* points looked at by the certificates */
+} gamma3_stats;
+
+/* gamma3_edge_triangles with an explicit pair strategy; stats may be NULL. */
+fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_params *p,
+                                     double kappa, const fl_graph_options *opt,
+                                     gamma3_pairs pairs, graph_builder *b, gamma3_stats *stats,
+                                     fl_error *err);
+
+/* An orthonormal frame (e, u1, u2) around the unit vector e (shared by both halves). */
+void gamma3_frame(const double *e, double *u1, double *u2);
+
+/* Per-pair callback of the recursion: 0 to go on, -1 out of memory. */
+typedef int (*gamma3_pair_fn)(void *ctx, uint32_t a, uint32_t b);
+
+/* Hands every unordered pair of distinct points of the grid to fn exactly once, except the
+ * pairs of cell pairs that gamma3_cell_certify proves to be no triangle's shortest edge. */
+fl_status gamma3_cell_pairs(const graph_grid *grid, double s, gamma3_pair_fn fn, void *ctx,
+                            gamma3_stats *stats, fl_error *err);
+
+/* The certificate for the boxes A = [loA, hiA], B = [loB, hiB] (docs/gamma.md, Lemma C): 1 when
+ * no pair a in A, b in B is the shortest edge of a triangle whose lens N_γ(-κ,-κ) is empty
+ * (s = sqrt(g^2 - 1), g = 1/(1-κ)); 0 when that is not proved. `uncertainty` scales the
+ * direction and midpoint uncertainty of the cell pair: 1 is the proved certificate; the tests
+ * pass 0 to show that they catch a certificate without it. *visits (may be NULL) is increased
+ * by the points looked at. */
+int gamma3_cell_certify(const graph_grid *grid, double s, const double *loA, const double *hiA,
+                        const double *loB, const double *hiB, double uncertainty, size_t *visits);
+
+#endif /* FL_GAMMA3_SEARCH_H */

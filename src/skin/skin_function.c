@@ -327,12 +327,43 @@ static void voronoi_vertex(const double *xyzw, const uint32_t *t, double o[4])
     if (isfinite(o[0] + o[1] + o[2] + pad)) o[3] = pad;
 }
 
-/* The tuples of rt: the 15 faces of every tetrahedron and the 7 faces of every hull face. */
-static rt_tuple *rt_tuples(const fl_rt3 *rt, size_t *count)
+/* 1 when some ball of the (sorted, padded) key v has a positive weight: the only simplices
+ * the mesher needs (skin_function_new_mesher). A finer test, t w_X > (1-t) max w_i (then G > 0
+ * on the whole mixed cell too: there G = t^2 pi_X(v) - t (1-t) w(z) with pi_X >= w_X on nu_X),
+ * would drop only 50839 of the 37 million positive tuples of the npm bunny's B*: not done. */
+static int has_positive_ball(const double *xyzw, const uint32_t v[4])
+{
+    for (int i = 0; i < 4 && v[i] != UINT32_MAX; i++)
+        if (xyzw[4 * (size_t)v[i] + 3] > 0) return 1;
+    return 0;
+}
+
+/* The number of faces of the nv balls v with a positive ball: all but those of the
+ * non-positive balls alone. */
+static size_t positive_faces(const double *xyzw, const uint32_t *v, int nv)
+{
+    int neg = 0;
+    for (int i = 0; i < nv; i++)
+        neg += !(xyzw[4 * (size_t)v[i] + 3] > 0);
+    return ((size_t)1 << nv) - ((size_t)1 << neg);
+}
+
+/* The tuples of rt: the 15 faces of every tetrahedron and the 7 faces of every hull face; with
+ * positive_only, only the faces with a positive ball (skin_function_new_mesher). */
+static rt_tuple *rt_tuples(const fl_rt3 *rt, const double *xyzw, int positive_only,
+                           size_t *count)
 {
     size_t n15 = rt->tet_count * 15, n7 = rt->hull_face_count * 7;
     if (n15 / 15 != rt->tet_count || n15 + n7 < n15) return NULL;
-    rt_tuple *tup = fl_alloc_array(n15 + n7 + 1, sizeof(rt_tuple));
+    size_t total = n15 + n7;
+    if (positive_only) { /* count first: all tuples of B* of the bunny would be 1.8 GB */
+        total = 0;
+        for (size_t q = 0; q < rt->tet_count; q++)
+            total += positive_faces(xyzw, rt->tet + 4 * q, 4);
+        for (size_t q = 0; q < rt->hull_face_count; q++)
+            total += positive_faces(xyzw, rt->hull_faces + 3 * q, 3);
+    }
+    rt_tuple *tup = fl_alloc_array(total + 1, sizeof(rt_tuple));
     if (!tup) return NULL;
     size_t m = 0;
     for (int pass = 0; pass < 2; pass++) {
@@ -350,6 +381,7 @@ static rt_tuple *rt_tuples(const fl_rt3 *rt, size_t *count)
                     u->v[i] = UINT32_MAX;
                 u->tet = pass ? UINT32_MAX : (uint32_t)q;
                 u->hull = pass ? (uint32_t)q : UINT32_MAX;
+                if (positive_only && !has_positive_ball(xyzw, u->v)) m--;
             }
     }
     *count = m;
@@ -471,7 +503,7 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
  * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
  * ball spans many simplices. */
 static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const double *xyzw,
-                              size_t n, double t, fl_error *err)
+                              size_t n, double t, int positive_only, fl_error *err)
 {
     fl_rt3 rt;
     fl_status st = fl_rt3_build(xyzw, n, NULL, &rt, err);
@@ -479,12 +511,26 @@ static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: %s", err ? err->message : "");
     if (st) return st;
     size_t m = 0;
-    rt_tuple *tup = rt_tuples(&rt, &m);
+    rt_tuple *tup = rt_tuples(&rt, xyzw, positive_only, &m);
     double *vor = fl_alloc_array(rt.tet_count + 1, 4 * sizeof(double));
     if (!tup || !vor) goto nomem;
     for (size_t i = 0; i < rt.tet_count; i++)
         voronoi_vertex(xyzw, rt.tet + 4 * i, vor + 4 * i);
     qsort(tup, m, sizeof(rt_tuple), cmp_tuple);
+    /* reserve the simplices exactly: growing a vector of 10^7 simplices by doubling held the
+     * old and the new copy at once (B* of the npm bunny, docs/skin.md) */
+    size_t groups = 0;
+    for (size_t i = 0; i < m; i++)
+        groups += i == 0 || cmp_tuple(tup + i - 1, tup + i) != 0;
+    if (fl_vec_reserve(v, groups) || fl_vec_reserve(link_start, groups + 1)) {
+        free(tup);
+        free(vor);
+        fl_rt3_free(&rt);
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1,
+                       "skin: out of memory for the %zu simplices of the mixed complex of %zu "
+                       "balls (%.0f MB)",
+                       groups, n, (double)groups * (sizeof(skin_simplex) + sizeof(size_t)) / 1e6);
+    }
     size_t zero = 0;
     if (fl_vec_push(link_start, &zero, 1)) goto nomem;
     for (size_t i = 0, j; i < m; i = j) {
@@ -767,8 +813,8 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
     return FL_OK;
 }
 
-fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_function **out,
-                               fl_error *err)
+static fl_status function_new(const double *xyzw, size_t n, double t, int positive_only,
+                              fl_skin_function **out, fl_error *err)
 {
     if (!out || (!xyzw && n)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "skin: NULL argument");
     *out = NULL;
@@ -796,7 +842,7 @@ fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_f
     if (n <= 8) {
         if (subsets(&v, xyzw, n, t)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     } else {
-        st = rt_simplices(&v, &link, &link_start, xyzw, n, t, err);
+        st = rt_simplices(&v, &link, &link_start, xyzw, n, t, positive_only, err);
         sk->walkable = !st;
     }
     sk->simplex_count = v.count;
@@ -821,4 +867,17 @@ fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_f
     }
     *out = sk;
     return FL_OK;
+}
+
+fl_status fl_skin_function_new(const double *xyzw, size_t n, double t, fl_skin_function **out,
+                               fl_error *err)
+{
+    return function_new(xyzw, n, t, 0, out, err);
+}
+
+/* The mesher's skin function: only the simplices with a positive ball (skin_internal.h). */
+fl_status skin_function_new_mesher(const double *xyzw, size_t n, double t,
+                                   fl_skin_function **out, fl_error *err)
+{
+    return function_new(xyzw, n, t, 1, out, err);
 }

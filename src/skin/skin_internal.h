@@ -82,6 +82,17 @@ struct fl_skin_function {
 double skin_value_walk(const fl_skin_function *skin, const double x[3], uint32_t *start);
 double skin_value_scan(const fl_skin_function *skin, const double x[3]);
 int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell);
+/* skin_function_new_mesher: fl_skin_function_new keeping only the simplices with a positive
+ * ball. The others (every ball of weight <= 0) have G >= 0 on their whole mixed cell
+ * (G = |x - z|^2 - t w(z) there, w(z) <= max w over X <= 0), are never in the index and never
+ * the minimiser of a G <= 0; a walk that reaches one falls back to the scan (skin_cell.c), whose
+ * value is G where G <= 0 and >= G > 0 elsewhere. So the sign of G, its value where G <= 0 and
+ * the zeros are those of the full function, which is all the meshers use; positive values may
+ * be overestimates (fl_skin_function_value keeps every simplex). On B* of the eps-approximation
+ * two thirds of the balls are negative: the npm bunny's 854378 B* balls gave ~3e7 simplices of
+ * 360 bytes (docs/skin.md). */
+fl_status skin_function_new_mesher(const double *xyzw, size_t n, double t,
+                                   fl_skin_function **out, fl_error *err);
 /* end of mixed-cell point location */
 
 

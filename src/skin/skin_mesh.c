@@ -514,7 +514,7 @@ static fl_status graded(const double *xyzw, size_t n, const fl_skin_options *o, 
                         fl_skin_stats *stats, fl_error *err)
 {
     fl_skin_function *g = NULL;
-    fl_status st = fl_skin_function_new(xyzw, n, o->t, &g, err);
+    fl_status st = skin_function_new_mesher(xyzw, n, o->t, &g, err);
     if (st != FL_OK) return st;
     fl_skin_options go = *o;
     double rmax = 0, cmax = 0;
@@ -565,7 +565,7 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
     fl_vec cubes;
     fl_vec_init(&cubes, sizeof(uint64_t));
     fl_skin_function *g = NULL;
-    fl_status st = fl_skin_function_new(xyzw, n, o.t, &g, err);
+    fl_status st = skin_function_new_mesher(xyzw, n, o.t, &g, err);
     m.g = g;
     if (!st) st = setup_grid(&m, xyzw, n, o.t, o.cell, err);
     /* A spacing below the coordinates' resolution (a ball of radius 1e-75 at x = -8) makes grid

@@ -1493,14 +1493,15 @@ typedef enum fl_g1_scheme {
                             * G1, eq. 9.6 forces a degenerate corner at every split point and
                             * eq. 9.7 leaves the far end of the outer edges open (docs/smooth.md
                             * derives and measures both); kept for comparison, not for use */
-    FL_G1_AUTO = 5 /* per connected component of the mesh: the three-split where it measures
-                    * G1 (max normal jump < 1e-7 degrees at 33 points of every patch edge, no
-                    * fold, normals interpolated), else the six-split; if neither is G1 with
-                    * the requested normal weighting, both again with the other two
-                    * weightings (surface->normal holds the normals used); else the best
-                    * measured. six_split_triangles says how many triangles took the
-                    * six-split. The two schemes never meet across an edge (docs/smooth.md,
-                    * "Auto") */
+    FL_G1_AUTO = 5 /* per connected component of the mesh: builds the three-split and the
+                    * six-split and keeps the one that measures G1 (max normal jump < 1e-7
+                    * degrees at 33 points of every patch edge, no fold, normals
+                    * interpolated); if both are G1, the one with the smaller max deviation
+                    * from the mesh (ties: the three-split); if neither is G1 with the
+                    * requested normal weighting, both again with the other two weightings
+                    * (surface->normal holds the normals used); else the best measured.
+                    * six_split_triangles says how many triangles took the six-split. The two
+                    * schemes never meet across an edge (docs/smooth.md, "Auto") */
 } fl_g1_scheme;
 
 /* Surface options; all zero is the default. */
@@ -1931,8 +1932,8 @@ fl_status fl_sweep_update_vertices(fl_sweep *sweep, const double *xyz, fl_error 
  * error radius, bounds the input triangles it stands for; a query refines the base mesh by
  * vertex splits (with their "split before" dependencies) in the order of the priority process
  * of §3.2 and answers exactly, or within a tolerance, like fl_sweep_closest. A cursor keeps
- * the refined mesh between coherent queries (§5.1) and goes back to the base mesh when that
- * stops paying. Same input rules and results (fl_closest) as fl_sweep_build/fl_sweep_closest;
+ * the refined mesh between coherent queries (§5.1) and goes back to a start level (the base
+ * mesh with its last collapses split again, docs/sweep.md) when that stops paying. Same input rules and results (fl_closest) as fl_sweep_build/fl_sweep_closest;
  * `element` is an input triangle index. The hierarchy is immutable after building and may be
  * shared by threads; a cursor belongs to one thread. */
 
@@ -1975,7 +1976,7 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
 fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, const double *q,
                                            double tolerance, fl_closest *result, fl_error *err);
 
-/* Makes the next query through the cursor start from the base mesh, as a fresh cursor would
+/* Makes the next query through the cursor start from the start level, as a fresh cursor would
  * (the cursor does this by itself when coherence stops paying, §5.1: docs/sweep.md); for
  * callers that know the next query is unrelated. NULL is fine. */
 void fl_sweep_collapse_cursor_reset(fl_sweep_collapse_cursor *cursor);

@@ -20,7 +20,7 @@ static const char *usage_text =
     "Bézier paths, -o .xy the curve sampled N points a segment (--samples, default 16).\n"
     "MESH (.off .obj .ply .stl, closed, manifold, oriented): cubic Bézier triangles\n"
     "interpolating the vertices and estimated normals (§9.4). Schemes: auto (default: per\n"
-    "connected component the three-split where it measures G1, else the six-split),\n"
+    "connected component both splits below, keeping the G1 one, the nearer if both are),\n"
     "three-split (§9.6, G1 on most meshes, smooth reflection lines), six-split (§9.8, G1\n"
     "on every mesh tested, smaller deviation on rough meshes, wigglier reflection lines on\n"
     "smooth ones), pn (the macro patches of steps 1-3 = PN triangles, only C0), two-split\n"
@@ -236,8 +236,8 @@ static int run_surface(const cli_common *c, const smooth_args *a)
     fl_g1_metrics metrics;
     fl_status st = fl_read_mesh(a->input, &m, &err);
     if (st) return cli_report(&err);
-    /* auto (the default): the three-split where it measures G1, else the six-split, per
-     * connected component (docs/smooth.md, "Auto") */
+    /* auto (the default): per connected component the three-split and the six-split, the G1
+     * one kept, the one nearer the mesh if both are (docs/smooth.md, "Auto") */
     int scheme = FL_G1_AUTO;
     if (a->scheme && !strcmp(a->scheme, "three-split")) scheme = FL_G1_THREE_SPLIT;
     if (a->scheme && !strcmp(a->scheme, "pn")) scheme = FL_G1_MACRO;

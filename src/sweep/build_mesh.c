@@ -270,16 +270,13 @@ static double tri_dist2(const tri_frame *f, const double *v, const double *p)
 }
 
 /* Triangles of a node that shape its bounding triangle (below). */
-#ifndef FL_SWEEP_SAMPLE
 #define FL_SWEEP_SAMPLE 128
-#endif
 
 /* Nodes of at most this many triangles measure ε on every vertex, in one streaming pass over
- * their contiguous corner records; larger ones bound it over their finished subtree
- * (max_distance_below), which visits a small part of it. */
-#ifndef FL_SWEEP_EXACT
+ * their contiguous run of leaves; larger ones find it by branch and bound over their finished
+ * subtree (max_distance_below), which opens a small part of it. 16 and 32 were slower (the
+ * search's overhead exceeds the streamed distances it saves), 128 no faster (bunny00, CPU). */
 #define FL_SWEEP_EXACT 64
-#endif
 
 /* The shape of a node's bounding element: a triangle in the principal plane of the node's
  * vertices (at the mid-plane of their spread along the normal) enclosing their projections.

@@ -7,10 +7,30 @@
  *
  * The boxes are exact (minima and maxima of input coordinates, no rounding), computed bottom-up
  * in one pass over the node array: builders number children after their parents. */
+#if defined(__linux__) && !defined(_DEFAULT_SOURCE)
+#define _DEFAULT_SOURCE /* madvise */
+#endif
+#include <stdint.h>
 #include <stdlib.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "core/core.h"
 #include "sweep/sweep_internal.h"
+
+void fl_sweep_advise_huge(void *p, size_t bytes)
+{
+#ifdef MADV_HUGEPAGE
+    /* Whole pages inside the block only; the advice is a hint, so its result is ignored. */
+    uintptr_t first = ((uintptr_t)p + 4095) & ~(uintptr_t)4095;
+    uintptr_t last = ((uintptr_t)p + bytes) & ~(uintptr_t)4095;
+    if (p && bytes >= ((size_t)4 << 20) && last > first)
+        (void)madvise((void *)first, last - first, MADV_HUGEPAGE);
+#else
+    (void)p, (void)bytes;
+#endif
+}
 
 /* The box of a leaf: its segment's or triangle's corners. */
 static void leaf_box(const fl_sweep *s, const fl_sweep_node *node, double *box)
@@ -56,7 +76,10 @@ static int fill_boxes(fl_sweep *s)
 
 void fl_sweep_compute_boxes(fl_sweep *s)
 {
-    if (!s->box) s->box = fl_alloc_array(s->node_count, 6 * sizeof *s->box);
+    if (!s->box) {
+        s->box = fl_alloc_array(s->node_count, 6 * sizeof *s->box);
+        fl_sweep_advise_huge(s->box, s->node_count * 6 * sizeof *s->box);
+    }
     if (s->box && !fill_boxes(s)) {
         free(s->box);
         s->box = NULL;

@@ -5,7 +5,14 @@
  * each internal node gets its own bounding triangle: a triangle in the principal plane of the
  * node's vertices enclosing their projection, with ε = the largest distance of a vertex to it.
  * The swept volume is convex, so containing the vertices it contains their triangles, and the
- * priority process of §3.2 runs on it unchanged. */
+ * priority process of §3.2 runs on it unchanged.
+ *
+ * Two passes (issue #9, build time against CGAL's AABB tree): the median splits need only the
+ * centroids, so they run first, top-down on 32-byte records, numbering the leaves last in
+ * split order; then the elements are fitted bottom-up (reverse creation order), each node
+ * reading its triangles from its contiguous run of leaves. Bottom-up, a large node finds ε by
+ * branch and bound over its finished subtree (max_distance_below) instead of measuring every
+ * vertex at every level; the result is the same largest vertex distance. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,18 +21,16 @@
 #include "sweep/sweep_internal.h"
 
 typedef struct range {
-    size_t start, end; /* triangles rec[start..end) */
+    size_t start, end; /* triangles split[start..end) */
     uint32_t node;
 } range;
 
-/* A triangle during the build: its corners and centroid inline, so that the median splits
- * move the records themselves and every pass over a node's triangles streams through memory
- * (an index array into the mesh made the build wait on cache misses, issue #9). */
-typedef struct tri_rec {
-    double c[9];
+/* A triangle during the median splits: its centroid and index (32 bytes, so the splits move
+ * little memory). */
+typedef struct split_rec {
     double centroid[3];
     uint32_t id;
-} tri_rec;
+} split_rec;
 
 /* Eigenvectors (columns of vec) of the symmetric 3x3 matrix a by cyclic Jacobi rotations;
  * the eigenvalues are left on a's diagonal. */
@@ -67,11 +72,11 @@ static void jacobi3(double a[3][3], double vec[3][3])
  * (area-weighted) normal, e[0] the first triangle's first edge in that plane. Near the leaves
  * this fixed cost per node dominated the build (issue #9). Returns 0 when the triangles are
  * too degenerate or large for it; the caller then fits the principal frame. */
-static int normal_frame(const tri_rec *rec, size_t start, size_t end, double e[3][3])
+static int normal_frame(const fl_sweep_node *rec, size_t start, size_t end, double e[3][3])
 {
     double nrm[3] = {0, 0, 0};
     for (size_t i = start; i < end; i++) {
-        const double *c = rec[i].c;
+        const double *c = rec[i].v;
         double a[3] = {c[3] - c[0], c[4] - c[1], c[5] - c[2]};
         double b[3] = {c[6] - c[0], c[7] - c[1], c[8] - c[2]};
         nrm[0] += a[1] * b[2] - a[2] * b[1];
@@ -80,7 +85,7 @@ static int normal_frame(const tri_rec *rec, size_t start, size_t end, double e[3
     }
     double len = sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
     if (!(len > 0) || !isfinite(len)) return 0;
-    const double *c = rec[start].c;
+    const double *c = rec[start].v;
     double d[3] = {c[3] - c[0], c[4] - c[1], c[5] - c[2]}, h = 0, u2 = 0, d2 = 0;
     for (int k = 0; k < 3; k++) {
         e[2][k] = nrm[k] / len;
@@ -107,14 +112,14 @@ static int normal_frame(const tri_rec *rec, size_t start, size_t end, double e[3
  * and axes e[0], e[1] (largest spread first) and the normal e[2]. One pass: moments about the
  * first point (shifted, so that a mesh far from the origin does not cancel the covariance);
  * the frame only shapes the element, whose radius is measured afterwards. */
-static size_t gather_frame(const tri_rec *rec, size_t start, size_t end, size_t stride, double *pts,
-                           double *mean, double e[3][3])
+static size_t gather_frame(const fl_sweep_node *rec, size_t start, size_t end, size_t stride,
+                           double *pts, double *mean, double e[3][3])
 {
-    const double *ref = rec[start].c;
+    const double *ref = rec[start].v;
     double sum[3] = {0, 0, 0}, s2[6] = {0, 0, 0, 0, 0, 0};
     size_t n = 0;
     for (size_t i = start; i < end; i += stride) {
-        const double *t = rec[i].c;
+        const double *t = rec[i].v;
         for (int k = 0; k < 3; k++, n++) {
             double x = t[3 * k] - ref[0], y = t[3 * k + 1] - ref[1], z = t[3 * k + 2] - ref[2];
             pts[3 * n] = t[3 * k], pts[3 * n + 1] = t[3 * k + 1], pts[3 * n + 2] = t[3 * k + 2];
@@ -209,39 +214,34 @@ static void enclosing_triangle(const double *uv, size_t n, const double *lo, con
     tri[2][1] = lo[1] + h + w / 2;
 }
 
-/* Squared distance from p to the triangle v[0..8], with a fast path for the common case of a
- * point whose projection falls well inside it (every node vertex does, the triangle encloses
- * their projections): then the distance is the distance to the plane. Barycentrics above
- * 1e-6 leave no doubt which case applies despite rounding; the rest go through the full
- * closest-point routine. */
+/* An upper bound on the squared distance from p to the triangle v[0..8] that is exact (up to
+ * rounding) when p projects into the triangle or near it, as every vertex of a node does onto
+ * the node's enclosing triangle: the distance to the point of the triangle with p's
+ * barycentrics, clamped to the triangle. Any point of the triangle bounds the distance from
+ * above, however the barycentrics were rounded (a thin triangle cannot make it too small, as
+ * the plane distance could), and ε only needs an upper bound. Points farther outside (a child's
+ * corners against its parent's triangle) go through the full closest-point routine, which the
+ * clamping would overestimate. */
 typedef struct tri_frame {
-    double a[3], b[3], nrm[3], d00, d01, d11, inv_denom;
+    double a[3], b[3], d00, d01, d11, inv_denom;
     int ok;
 } tri_frame;
 
 static void tri_frame_init(tri_frame *f, const double *v)
 {
-    double n2 = 0;
+    f->d00 = f->d01 = f->d11 = 0;
     for (int c = 0; c < 3; c++) {
         f->a[c] = v[3 + c] - v[c];
         f->b[c] = v[6 + c] - v[c];
-    }
-    f->nrm[0] = f->a[1] * f->b[2] - f->a[2] * f->b[1];
-    f->nrm[1] = f->a[2] * f->b[0] - f->a[0] * f->b[2];
-    f->nrm[2] = f->a[0] * f->b[1] - f->a[1] * f->b[0];
-    f->d00 = f->d01 = f->d11 = 0;
-    for (int c = 0; c < 3; c++) {
-        n2 += f->nrm[c] * f->nrm[c];
         f->d00 += f->a[c] * f->a[c];
         f->d01 += f->a[c] * f->b[c];
         f->d11 += f->b[c] * f->b[c];
     }
+    /* denom = |a x b|^2 = d00 d11 sin^2 of the angle at v[0]: slivers (sin below 1e-4) leave
+     * the barycentrics to rounding noise and go through the full routine. */
     double denom = f->d00 * f->d11 - f->d01 * f->d01;
-    f->ok = n2 > 0 && denom > 0 && isfinite(1 / denom) && isfinite(1 / sqrt(n2));
-    if (!f->ok) return;
-    f->inv_denom = 1 / denom;
-    double inv_len = 1 / sqrt(n2);
-    for (int c = 0; c < 3; c++) f->nrm[c] *= inv_len;
+    f->ok = denom > 1e-8 * (f->d00 * f->d11) && isfinite(1 / denom);
+    if (f->ok) f->inv_denom = 1 / denom;
 }
 
 static double tri_dist2(const tri_frame *f, const double *v, const double *p)
@@ -252,9 +252,17 @@ static double tri_dist2(const tri_frame *f, const double *v, const double *p)
         double d21 = w[0] * f->b[0] + w[1] * f->b[1] + w[2] * f->b[2];
         double beta = (f->d11 * d20 - f->d01 * d21) * f->inv_denom;
         double gamma = (f->d00 * d21 - f->d01 * d20) * f->inv_denom;
-        if (beta > 1e-6 && gamma > 1e-6 && 1 - beta - gamma > 1e-6) {
-            double h = w[0] * f->nrm[0] + w[1] * f->nrm[1] + w[2] * f->nrm[2];
-            return h * h;
+        if (beta > -1e-6 && gamma > -1e-6 && 1 - beta - gamma > -1e-6) {
+            beta = beta > 0 ? beta : 0;
+            gamma = gamma > 0 ? gamma : 0;
+            double sum = beta + gamma;
+            if (sum > 1) beta /= sum, gamma /= sum;
+            double d2 = 0;
+            for (int c = 0; c < 3; c++) {
+                double x = w[c] - beta * f->a[c] - gamma * f->b[c];
+                d2 += x * x;
+            }
+            return d2;
         }
     }
     double bary[3], closest[3];
@@ -264,63 +272,187 @@ static double tri_dist2(const tri_frame *f, const double *v, const double *p)
 /* Triangles of a node that shape its bounding triangle (below). */
 #define FL_SWEEP_SAMPLE 128
 
-/* The bounding element of a node: a triangle in the principal plane of the node's vertices
- * (at the mid-plane of their spread along the normal) enclosing their projections, and ε =
- * the farthest vertex from it. Large nodes shape the triangle on a sample of at most
- * FL_SWEEP_SAMPLE of their triangles (every k-th in the median-split order, so spread over
- * the node): ε is measured on EVERY vertex afterwards, so the element contains the node
- * whatever the sample; a vertex the sample misses only widens ε. This turns the build's
- * several passes over every vertex per tree level into one (issue #9: build ≤ 2× CGAL).
- * Also rep, the vertex nearest to the sample's mean: a point of the shape inside the element,
- * whose distance bounds the distance to the node's triangles from above (query.c). pts and uv
- * are scratch room for 9 and 6 doubles a sampled triangle. */
-static void bounding_triangle(const tri_rec *rec, size_t start, size_t end, double scale,
-                              double *pts, double *uv, fl_sweep_node *node)
+/* Nodes of at most this many triangles measure ε on every vertex, in one streaming pass over
+ * their contiguous run of leaves; larger ones find it by branch and bound over their finished
+ * subtree (max_distance_below), which opens a small part of it. 16 and 32 were slower (the
+ * search's overhead exceeds the streamed distances it saves), 128 no faster (bunny00, CPU). */
+#define FL_SWEEP_EXACT 64
+
+/* The shape of a node's bounding element: a triangle in the principal plane of the node's
+ * vertices (at the mid-plane of their spread along the normal) enclosing their projections.
+ * Large nodes shape it on a sample of at most FL_SWEEP_SAMPLE of their triangles (every k-th
+ * in the median-split order, so spread over the node): ε is measured or bounded over every
+ * vertex afterwards, so the element contains the node whatever the sample; a vertex the
+ * sample misses only widens ε. Also rep, the sampled vertex nearest to the sample's mean: a
+ * point of the shape inside the element, whose distance bounds the distance to the node's
+ * triangles from above (query.c). pts and uv are scratch room for 9 and 6 doubles a sampled
+ * triangle. */
+static void shape_triangle(const fl_sweep_node *rec, size_t start, size_t end, double *pts,
+                           double *uv, fl_sweep_node *node)
 {
     double mean[3], e[3][3], lo[3] = {INFINITY, INFINITY, INFINITY};
-    double hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    double hi[3] = {-INFINITY, -INFINITY, -INFINITY}, best = INFINITY;
     size_t stride = (end - start + FL_SWEEP_SAMPLE - 1) / FL_SWEEP_SAMPLE;
     size_t n = gather_frame(rec, start, end, stride, pts, mean, e);
     for (size_t i = 0; i < n; i++) {
         const double *p = pts + 3 * i;
+        double r2 = 0;
         for (int a = 0; a < 3; a++) {
             double x = (p[0] - mean[0]) * e[a][0] + (p[1] - mean[1]) * e[a][1] +
                        (p[2] - mean[2]) * e[a][2];
             if (a < 2) uv[2 * i + a] = x;
             lo[a] = x < lo[a] ? x : lo[a]; /* not fmin/fmax: libm calls, and x is finite */
             hi[a] = x > hi[a] ? x : hi[a];
+            r2 += (p[a] - mean[a]) * (p[a] - mean[a]);
+        }
+        if (r2 < best) {
+            best = r2;
+            node->rep[0] = p[0], node->rep[1] = p[1], node->rep[2] = p[2];
         }
     }
+    if (!(best < INFINITY)) memcpy(node->rep, pts, 3 * sizeof *pts); /* NaN spreads: any vertex */
     double corner[3][2], mid_n = (lo[2] + hi[2]) / 2;
     enclosing_triangle(uv, n, lo, hi, corner);
     for (int k = 0; k < 3; k++)
         for (int c = 0; c < 3; c++)
             node->v[3 * k + c] =
                 mean[c] + corner[k][0] * e[0][c] + corner[k][1] * e[1][c] + mid_n * e[2][c];
-    /* Measured against the stored triangle, not derived from the frame, so rounding in the
-     * frame cannot shrink it. */
-    double eps2 = 0, best = INFINITY;
-    tri_frame f;
-    tri_frame_init(&f, node->v);
-    for (size_t i = start; i < end; i++) {
-        for (int k = 0; k < 3; k++) {
-            const double *p = rec[i].c + 3 * k;
-            double d2 = tri_dist2(&f, node->v, p);
-            eps2 = d2 > eps2 ? d2 : eps2;
-            double r2 = (p[0] - mean[0]) * (p[0] - mean[0]) +
-                        (p[1] - mean[1]) * (p[1] - mean[1]) + (p[2] - mean[2]) * (p[2] - mean[2]);
-            if (r2 < best) {
-                best = r2;
-                node->rep[0] = p[0], node->rep[1] = p[1], node->rep[2] = p[2];
-            }
-        }
-    }
-    node->eps = fl_sweep_widen(sqrt(eps2), scale);
 }
 
-/* Reorders rec[start..end) so that rec[mid] has the median centroid coordinate `axis` and
+/* The largest distance from a vertex of rec[start..end) to the triangle v (frame f). */
+static double max_distance_exact(const tri_frame *f, const double *v, const fl_sweep_node *rec,
+                                 size_t start, size_t end)
+{
+    double eps2 = 0;
+    for (size_t i = start; i < end; i++)
+        for (int k = 0; k < 3; k++) {
+            double d2 = tri_dist2(f, v, rec[i].v + 3 * k);
+            eps2 = d2 > eps2 ? d2 : eps2; /* a NaN is never picked */
+        }
+    return sqrt(eps2);
+}
+
+/* A subtree waiting in max_distance_below, with an upper bound on its vertices' distances. */
+typedef struct bound_entry {
+    uint32_t node;
+    double ub;
+} bound_entry;
+
+/* The state of one max_distance_below. */
+typedef struct bound_search {
+    const fl_sweep *s;
+    const tri_frame *f;
+    const double *v; /* the node's triangle */
+    double vscale;   /* largest |coordinate| of the node's triangle and the input */
+    double found;    /* the largest distance of a vertex measured so far */
+    double pruned;   /* the largest bound of a subtree left out */
+    bound_entry *stack;
+    size_t top;
+} bound_search;
+
+/* An upper bound on the distance from any point of child c's volume to the triangle v: every
+ * such point is within ε_c of c's triangle, whose points are within the largest corner
+ * distance of v (distance to a convex set is convex, so over a triangle it peaks at a corner);
+ * the triangle inequality adds the two. The corner distance is widened by its rounding
+ * error (64 ulps of the largest coordinate involved); ε_c is already widened. */
+static double child_bound(const bound_search *b, const fl_sweep_node *c)
+{
+    double d2 = 0, m = b->vscale;
+    for (int k = 0; k < 3; k++) {
+        double x = tri_dist2(b->f, b->v, c->v + 3 * k);
+        d2 = x > d2 ? x : d2;
+    }
+    for (int i = 0; i < 9; i++)
+        m = fabs(c->v[i]) > m ? fabs(c->v[i]) : m;
+    return fl_sweep_widen(sqrt(d2), m) + c->eps;
+}
+
+/* Settles the children of `id`: a leaf child's three vertices are measured; an internal
+ * child is pushed with its bound unless that bound is already covered by `found`, in which
+ * case it only raises `pruned`. The child with the larger bound is pushed last, so that the
+ * search goes after the farthest vertices first and `found` grows early. */
+static void expand(bound_search *b, uint32_t id)
+{
+    const fl_sweep_node *node = b->s->nodes + id;
+    bound_entry e[2];
+    int pushed = 0;
+    for (int k = 0; k < 2; k++) {
+        const fl_sweep_node *c = b->s->nodes + node->child[k];
+        if (fl_sweep_is_leaf(c)) {
+            for (int j = 0; j < 3; j++) {
+                double d = sqrt(tri_dist2(b->f, b->v, c->v + 3 * j));
+                b->found = d > b->found ? d : b->found;
+            }
+            continue;
+        }
+        double ub = child_bound(b, c);
+        if (ub <= b->found) {
+            b->pruned = ub > b->pruned ? ub : b->pruned;
+            continue;
+        }
+        e[pushed++] = (bound_entry){node->child[k], ub}; /* NaN bounds too: searched below */
+    }
+    if (pushed == 2 && e[0].ub > e[1].ub) {
+        bound_entry t = e[0];
+        e[0] = e[1];
+        e[1] = t;
+    }
+    for (int k = 0; k < pushed; k++)
+        b->stack[b->top++] = e[k];
+}
+
+/* The radius of an internal node whose descendants are finished (bottom-up order): by branch
+ * and bound over its subtree, the largest of (a) the distances of the vertices it measures and
+ * (b) the bounds of the subtrees it leaves out because (a) already covers them. Every vertex
+ * below is in a measured leaf or a left-out subtree, so the result bounds them all; it equals
+ * the exact largest vertex distance up to the slack of the left-out bounds, which can only
+ * exceed it when they are larger than every measured distance (they never are: a subtree is
+ * left out only when its bound is at most `found`). The children's representatives are
+ * vertices of the node, so their distances start `found`. `stack` holds node_count entries
+ * (a depth-first search keeps at most depth + 1). */
+static double max_distance_below(const fl_sweep *s, uint32_t id, const tri_frame *f,
+                                 bound_entry *stack)
+{
+    const fl_sweep_node *node = s->nodes + id;
+    bound_search b = {s, f, node->v, s->scale, 0, 0, stack, 0};
+    for (int i = 0; i < 9; i++)
+        b.vscale = fabs(node->v[i]) > b.vscale ? fabs(node->v[i]) : b.vscale;
+    for (int k = 0; k < 2; k++) {
+        const fl_sweep_node *c = s->nodes + node->child[k];
+        if (fl_sweep_is_leaf(c)) continue; /* measured by expand; leaves have no rep */
+        double d = sqrt(tri_dist2(f, node->v, c->rep));
+        b.found = d > b.found ? d : b.found;
+    }
+    expand(&b, id);
+    while (b.top > 0) {
+        bound_entry e = b.stack[--b.top];
+        if (e.ub <= b.found) {
+            b.pruned = e.ub > b.pruned ? e.ub : b.pruned;
+            continue;
+        }
+        expand(&b, e.node);
+    }
+    return b.found > b.pruned ? b.found : b.pruned;
+}
+
+/* Fits internal node `id` over rec[start..end) once its descendants are finished. */
+static void fit_node(fl_sweep *s, uint32_t id, const fl_sweep_node *rec, size_t start, size_t end,
+                     double *pts, double *uv, bound_entry *stack)
+{
+    fl_sweep_node *node = s->nodes + id;
+    shape_triangle(rec, start, end, pts, uv, node);
+    /* Measured against the stored triangle, not derived from the frame, so rounding in the
+     * frame cannot shrink it. */
+    tri_frame f;
+    tri_frame_init(&f, node->v);
+    double eps = end - start <= FL_SWEEP_EXACT ? max_distance_exact(&f, node->v, rec, start, end)
+                                               : max_distance_below(s, id, &f, stack);
+    node->eps = fl_sweep_widen(eps, s->scale);
+}
+
+/* Reorders split[start..end) so that split[mid] has the median centroid coordinate `axis` and
  * smaller ones precede it (Hoare quickselect). */
-static void select_median(tri_rec *rec, int axis, size_t start, size_t mid, size_t end)
+static void select_median(split_rec *rec, int axis, size_t start, size_t mid, size_t end)
 {
     size_t lo = start, hi = end - 1;
     while (lo < hi) {
@@ -332,7 +464,7 @@ static void select_median(tri_rec *rec, int axis, size_t start, size_t mid, size
             while (rec[j].centroid[axis] > pivot)
                 j--;
             if (i <= j) {
-                tri_rec tmp = rec[i];
+                split_rec tmp = rec[i];
                 rec[i] = rec[j];
                 rec[j] = tmp;
                 i++;
@@ -349,7 +481,7 @@ static void select_median(tri_rec *rec, int axis, size_t start, size_t mid, size
     }
 }
 
-static int widest_axis(const tri_rec *rec, size_t start, size_t end)
+static int widest_axis(const split_rec *rec, size_t start, size_t end)
 {
     double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
     for (size_t i = start; i < end; i++)
@@ -364,12 +496,14 @@ static int widest_axis(const tri_rec *rec, size_t start, size_t end)
     return axis;
 }
 
-static void set_leaf(const tri_rec *rec, fl_sweep_node *node)
+static void set_leaf(const fl_mesh *m, uint32_t t, fl_sweep_node *node)
 {
-    memcpy(node->v, rec->c, 9 * sizeof *node->v);
+    for (int k = 0; k < 3; k++)
+        memcpy(node->v + 3 * k, m->xyz + 3 * (size_t)m->tri[3 * (size_t)t + k],
+               3 * sizeof *node->v);
     node->eps = 0;
     node->child[0] = node->child[1] = FL_SWEEP_LEAF;
-    node->element = rec->id;
+    node->element = t;
 }
 
 static fl_status check_mesh(const fl_mesh *m, fl_error *err)
@@ -394,44 +528,107 @@ static fl_status check_mesh(const fl_mesh *m, fl_error *err)
     return FL_OK;
 }
 
-/* Splits triangle ranges top-down; nodes are numbered in creation order, root first. */
-static fl_status split_ranges(fl_sweep *s, tri_rec *rec, const fl_sweep_options *opt,
-                              fl_error *err)
+/* Splits triangle ranges top-down (centroids only), numbering internal nodes in creation
+ * order from the root (0 .. n-2) and the leaves after them in split order (leaf of
+ * split[i] = n - 1 + i), so that children come after their parents (the bottom-up passes need
+ * it: here, boxes.c, deform.c) and every node's leaves are contiguous in the node array.
+ * span[2 id], span[2 id + 1] keep internal node id's range of positions. */
+static fl_status split_ranges(fl_sweep *s, const fl_mesh *mesh, split_rec *split, uint32_t *span,
+                              const fl_sweep_options *opt, fl_error *err)
 {
+    size_t n = s->elements, top = 0, next = 1;
+    if (n == 1) {
+        set_leaf(mesh, split[0].id, s->nodes);
+        return FL_OK;
+    }
     range *stack = fl_alloc_array(s->node_count, sizeof *stack);
-    double *uv = fl_alloc_array(FL_SWEEP_SAMPLE, 6 * sizeof *uv);
-    double *pts = fl_alloc_array(FL_SWEEP_SAMPLE, 9 * sizeof *pts);
+    if (!stack) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
     fl_status st = FL_OK;
-    if (!stack || !uv || !pts)
-        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
-    size_t top = 0, next = 1, done = 0;
-    if (st == FL_OK) stack[top++] = (range){0, s->elements, 0};
+    stack[top++] = (range){0, n, 0};
     while (top > 0) {
         range r = stack[--top];
         fl_sweep_node *node = s->nodes + r.node;
-        if (r.end - r.start == 1) {
-            set_leaf(rec + r.start, node);
-            if ((++done & 0xffff) == 0 && opt &&
-                fl_progress(opt->progress, opt->progress_user, "sweep hierarchy",
-                            (double)done / (double)s->elements)) {
-                st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
-                break;
-            }
-            continue;
-        }
-        bounding_triangle(rec, r.start, r.end, s->scale, pts, uv, node);
+        span[2 * (size_t)r.node] = (uint32_t)r.start;
+        span[2 * (size_t)r.node + 1] = (uint32_t)r.end;
         size_t mid = r.start + (r.end - r.start) / 2;
-        select_median(rec, widest_axis(rec, r.start, r.end), r.start, mid, r.end);
+        select_median(split, widest_axis(split, r.start, r.end), r.start, mid, r.end);
         node->element = FL_SWEEP_LEAF;
-        node->child[0] = (uint32_t)next;
-        node->child[1] = (uint32_t)(next + 1);
-        stack[top++] = (range){r.start, mid, (uint32_t)next};
-        stack[top++] = (range){mid, r.end, (uint32_t)(next + 1)};
-        next += 2;
+        range half[2] = {{r.start, mid, 0}, {mid, r.end, 0}};
+        for (int k = 0; k < 2; k++) {
+            if (half[k].end - half[k].start == 1) {
+                half[k].node = (uint32_t)(n - 1 + half[k].start);
+                set_leaf(mesh, split[half[k].start].id, s->nodes + half[k].node);
+            } else {
+                half[k].node = (uint32_t)next++;
+                stack[top++] = half[k];
+            }
+            node->child[k] = half[k].node;
+        }
+        if (((r.node + 1) & 0xffff) == 0 && opt &&
+            fl_progress(opt->progress, opt->progress_user, "sweep hierarchy",
+                        (double)r.node / (double)n)) {
+            st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
+            break;
+        }
     }
     free(stack);
+    return st;
+}
+
+/* Fits every internal node's element, children before parents (reverse creation order), so
+ * that max_distance_below finds the subtree finished. */
+static fl_status fit_nodes(fl_sweep *s, const uint32_t *span, fl_error *err)
+{
+    double *uv = fl_alloc_array(FL_SWEEP_SAMPLE, 6 * sizeof *uv);
+    double *pts = fl_alloc_array(FL_SWEEP_SAMPLE, 9 * sizeof *pts);
+    bound_entry *stack = fl_alloc_array(s->node_count, sizeof *stack);
+    const fl_sweep_node *leaves = s->nodes + (s->elements - 1);
+    fl_status st = FL_OK;
+    if (!uv || !pts || !stack) {
+        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for the hierarchy");
+    } else {
+        for (size_t i = s->elements - 1; i-- > 0;)
+            fit_node(s, (uint32_t)i, leaves, span[2 * i], span[2 * i + 1], pts, uv, stack);
+    }
     free(uv);
     free(pts);
+    free(stack);
+    return st;
+}
+
+/* The hierarchy in two passes (issue #9: the build was 2-3x CGAL's): the median splits need
+ * only the centroids, so they run first on 32-byte records; then the elements are fitted
+ * bottom-up, reading each node's triangles from its contiguous run of leaves. */
+static fl_status build_tree(fl_sweep *s, const fl_mesh *mesh, const fl_sweep_options *opt,
+                            fl_error *err)
+{
+    /* The split records (32 bytes a triangle) and the ranges (8) are scratch in the box array
+     * (48 bytes a node, 2n - 1 nodes: room for 40n), which is filled only at the end by
+     * fl_sweep_compute_boxes: its pages are touched once for both uses, where separate blocks
+     * would each pay a first-touch fault a page (tens of µs on this machine; issue #9). The
+     * boxes are optional, so without them the scratch gets its own block. */
+    size_t n = s->elements;
+    s->box = fl_alloc_array(s->node_count, 6 * sizeof *s->box);
+    void *own = NULL, *scratch = s->box;
+    if (scratch)
+        fl_sweep_advise_huge(scratch, s->node_count * 6 * sizeof *s->box);
+    else
+        scratch = own = fl_alloc_array(n, sizeof(split_rec) + 2 * sizeof(uint32_t));
+    if (!scratch) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
+    split_rec *split = scratch;
+    uint32_t *span = (uint32_t *)(split + n); /* internal nodes only */
+    for (size_t t = 0; t < n; t++) {
+        const uint32_t *tri = mesh->tri + 3 * t;
+        split[t].id = (uint32_t)t;
+        for (int c = 0; c < 3; c++)
+            split[t].centroid[c] =
+                (mesh->xyz[3 * (size_t)tri[0] + c] + mesh->xyz[3 * (size_t)tri[1] + c] +
+                 mesh->xyz[3 * (size_t)tri[2] + c]) /
+                3;
+    }
+    fl_status st = split_ranges(s, mesh, split, span, opt, err);
+    if (st == FL_OK) st = fit_nodes(s, span, err);
+    free(own);
     return st;
 }
 
@@ -443,26 +640,13 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
     fl_status st = check_mesh(mesh, err);
     if (st != FL_OK) return st;
     size_t n = mesh->triangle_count;
-    tri_rec *rec = fl_alloc_array(n, sizeof *rec);
     fl_sweep *s = NULL;
-    if (!rec) {
-        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
-    } else {
-        st = fl_sweep_alloc(3, 1, n, &s, err);
-    }
+    st = fl_sweep_alloc(3, 1, n, &s, err);
     if (st == FL_OK) {
+        fl_sweep_advise_huge(s->nodes, s->node_count * sizeof *s->nodes);
         for (size_t v = 0; v < 3 * mesh->vertex_count; v++)
             s->scale = fmax(s->scale, fabs(mesh->xyz[v]));
-        for (size_t t = 0; t < n; t++) {
-            tri_rec *r = rec + t;
-            r->id = (uint32_t)t;
-            for (int k = 0; k < 3; k++)
-                memcpy(r->c + 3 * k, mesh->xyz + 3 * (size_t)mesh->tri[3 * t + k],
-                       3 * sizeof *r->c);
-            for (int c = 0; c < 3; c++)
-                r->centroid[c] = (r->c[c] + r->c[3 + c] + r->c[6 + c]) / 3;
-        }
-        st = split_ranges(s, rec, opt, err);
+        st = build_tree(s, mesh, opt, err);
     }
     if (st == FL_OK) { /* the topology, for fl_sweep_update_vertices */
         s->tri = fl_alloc_array(n, 3 * sizeof *s->tri);
@@ -472,7 +656,6 @@ fl_status fl_sweep_build(const fl_mesh *mesh, const fl_sweep_options *opt, fl_sw
         else
             st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);
     }
-    free(rec);
     if (st != FL_OK) {
         fl_sweep_free(s);
         return st;

@@ -101,6 +101,13 @@ const fl_sweep *fl_sweep_cursor_sweep(const fl_sweep_cursor *cursor);
  * (the boxes only speed queries up) or when a child is numbered before its parent. */
 void fl_sweep_compute_boxes(fl_sweep *s);
 
+/* Asks the kernel (Linux: madvise MADV_HUGEPAGE) to back a freshly allocated, not yet touched
+ * block of at least 4 MiB with huge pages: the first touch of every 4 KiB page costs a fault
+ * of several microseconds on a virtual machine, and the node and box arrays of a large
+ * hierarchy are thousands of pages (issue #9: a build in a fresh process spent more time in
+ * page faults than in geometry). A hint only; elsewhere it does nothing (boxes.c). */
+void fl_sweep_advise_huge(void *p, size_t bytes);
+
 /* Squared distance from q to the box b (lo[3], hi[3]); 0 inside. */
 static inline double fl_sweep_box_dist2(const double *b, const double *q)
 {

@@ -102,6 +102,32 @@ static inline double g1_max_edge_jump(const fl_g1_surface *s, int samples, size_
     return worst;
 }
 
+/* Interpolation errors at the patch corners that are mesh vertices: verr = max coordinate
+ * difference to the vertex, nerr = max coordinate difference of the patch normal to
+ * s->normal, eerr (when est is not NULL) = max difference of s->normal to est. Returns how
+ * many corners were checked. */
+static inline size_t g1_corner_errors(const fl_g1_surface *s, const fl_mesh *m, const double *est,
+                                      double *verr, double *nerr, double *eerr)
+{
+    size_t hits = 0;
+    *verr = *nerr = 0;
+    if (eerr) *eerr = 0;
+    for (size_t p = 0; p < s->patch_count; p++)
+        for (int c = 0; c < 3; c++) {
+            uint32_t v = s->corner[3 * p + c];
+            if (v >= m->vertex_count) continue;
+            double pt[3], nn[3];
+            fl_g1_patch_eval(s->ctrl + 30 * p, c == 0, c == 1, c == 2, pt, nn);
+            for (int d = 0; d < 3; d++) {
+                *verr = fmax(*verr, fabs(pt[d] - m->xyz[3 * v + d]));
+                *nerr = fmax(*nerr, fabs(nn[d] - s->normal[3 * v + d]));
+                if (est && eerr) *eerr = fmax(*eerr, fabs(s->normal[3 * v + d] - est[3 * v + d]));
+            }
+            hits++;
+        }
+    return hits;
+}
+
 /* Vlachos et al. 2001, "Curved PN triangles", geometry control points of triangle (p1, p2,
  * p3) with normals n1, n2, n3, in the order b300 b210 b201 b120 b111 b102 b030 b021 b012 b003. */
 static inline void g1_pn_control_points(const double *p1, const double *p2, const double *p3,

@@ -74,18 +74,8 @@ static void test_needle_triangles_stay_g1(void)
             CHECK_STATUS(st, FL_OK, &err);
             if (st) continue;
             size_t flips, unpaired;
-            double jump = g1_max_edge_jump(&s, 40, &flips, &unpaired), nerr = 0, verr = 0;
-            for (size_t p = 0; p < s.patch_count; p++)
-                for (int c = 0; c < 3; c++) {
-                    uint32_t v = s.corner[3 * p + c];
-                    if (v >= m.vertex_count) continue;
-                    double pt[3], nn[3];
-                    fl_g1_patch_eval(s.ctrl + 30 * p, c == 0, c == 1, c == 2, pt, nn);
-                    for (int d = 0; d < 3; d++) {
-                        verr = fmax(verr, fabs(pt[d] - m.xyz[3 * v + d]));
-                        nerr = fmax(nerr, fabs(nn[d] - s.normal[3 * v + d]));
-                    }
-                }
+            double jump = g1_max_edge_jump(&s, 40, &flips, &unpaired), nerr, verr;
+            g1_corner_errors(&s, &m, NULL, &verr, &nerr, NULL);
             double corner = smallest_vertex_corner(&s);
             printf("case %d scheme %d: jump %.3g deg, folds %zu, normal error %.3g, smallest "
                    "vertex corner %.3g rad\n",

@@ -99,21 +99,8 @@ static void test_six_split_interpolates_vertices_and_normals_to_1e12(void)
         double *est = malloc(3 * m.vertex_count * sizeof(double));
         fl_error err;
         CHECK_STATUS(fl_g1_vertex_normals(&m, FL_G1_WEIGHT_DEFAULT, est, &err), FL_OK, &err);
-        double verr = 0, nerr = 0, eerr = 0;
-        size_t hits = 0;
-        for (size_t p = 0; p < s.patch_count; p++)
-            for (int c = 0; c < 3; c++) {
-                uint32_t v = s.corner[3 * p + c];
-                if (v >= m.vertex_count) continue;
-                double pt[3], nn[3];
-                fl_g1_patch_eval(s.ctrl + 30 * p, c == 0, c == 1, c == 2, pt, nn);
-                for (int d = 0; d < 3; d++) {
-                    verr = fmax(verr, fabs(pt[d] - m.xyz[3 * v + d]));
-                    nerr = fmax(nerr, fabs(nn[d] - s.normal[3 * v + d]));
-                    eerr = fmax(eerr, fabs(s.normal[3 * v + d] - est[3 * v + d]));
-                }
-                hits++;
-            }
+        double verr, nerr, eerr;
+        size_t hits = g1_corner_errors(&s, &m, est, &verr, &nerr, &eerr);
         CHECK_MSG(verr <= 1e-12 && nerr <= 1e-12, "mesh %d: vertex %g normal %g", i, verr, nerr);
         if (s.orientation_repairs == 0) CHECK_MSG(eerr <= 1e-12, "mesh %d: %g", i, eerr);
         CHECK_EQ_INT(hits, 2 * 6 * m.triangle_count / 2); /* two vertex corners a patch */

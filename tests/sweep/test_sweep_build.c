@@ -12,7 +12,8 @@
  *    bottom-up passes of boxes.c and deform.c need it).
  * Meshes: a noisy sphere, a soup of random triangles (nodes whose bounds prune badly), a flat
  * grid (every distance a tie at 0), one triangle repeated, needles along a line, a small mesh
- * far from the origin, coordinates near the 1e150 limit, and meshes of one and two triangles. */
+ * far from the origin, coordinates near the 1e150 limit, a two-sided sphere (twins whose normals
+ * cancel), and meshes of one and two triangles. */
 #include <stdint.h>
 
 #include "fl_test.h"
@@ -231,6 +232,24 @@ static void test_sweep_build_needles_radii_exact(void)
     check_build(&m);
 }
 
+/* Every triangle of a noisy sphere twice, the second copy reversed: the median splits pair
+ * twins, whose summed normal cancels exactly, so small nodes take the Jacobi fallback of
+ * normal_frame beside nodes that take the summed-normal frame. */
+static void test_sweep_build_two_sided_radii_exact(void)
+{
+    double c[3] = {-0.4, 0.2, 0.7};
+    fl_mesh a = noisy_sphere(12, 16, 2.0, c, 0.05);
+    fl_mesh m = new_mesh(a.vertex_count, 2 * a.triangle_count);
+    memcpy(m.xyz, a.xyz, 3 * a.vertex_count * sizeof(double));
+    for (size_t t = 0; t < a.triangle_count; t++) {
+        const uint32_t *q = a.tri + 3 * t;
+        uint32_t twin[6] = {q[0], q[1], q[2], q[0], q[2], q[1]};
+        memcpy(m.tri + 6 * t, twin, sizeof twin);
+    }
+    free_mesh(&a);
+    check_build(&m);
+}
+
 /* Far from the origin (1e6 away, size 1e-3) and near the 1e150 limit: rounding slack and the
  * corner bounds of the branch and bound at both ends of the range. */
 static void test_sweep_build_far_and_huge_coordinates(void)
@@ -255,5 +274,6 @@ FL_TEST_MAIN(FL_TEST_CASE(test_sweep_build_noisy_sphere_radii_exact),
              FL_TEST_CASE(test_sweep_build_flat_grid_radii_exact),
              FL_TEST_CASE(test_sweep_build_repeated_triangle_radii_exact),
              FL_TEST_CASE(test_sweep_build_needles_radii_exact),
+             FL_TEST_CASE(test_sweep_build_two_sided_radii_exact),
              FL_TEST_CASE(test_sweep_build_far_and_huge_coordinates),
              FL_TEST_CASE(test_sweep_build_one_and_two_triangles))

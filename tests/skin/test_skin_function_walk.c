@@ -14,6 +14,7 @@
 #include <stdlib.h>
 
 #include "fl_test.h"
+#include "skin_rng.h"
 #include "skin/skin_internal.h"
 /* only skin_oracle_value is used here; the header's other oracles are static */
 #pragma GCC diagnostic push
@@ -25,10 +26,7 @@ static uint64_t rng_state = 0x243f6a8885a308d3ULL;
 
 static double rnd(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) / 9007199254740992.0;
+    return skin_rng_next(&rng_state);
 }
 
 /* Next query: mostly a small step from the previous one (as the mesher's neighbouring grid

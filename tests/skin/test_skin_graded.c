@@ -9,16 +9,14 @@
 #include <stdlib.h>
 
 #include "fl_test.h"
+#include "skin_rng.h"
 #include "skin_oracle.h"
 
 static uint64_t rng_state = 0x2545f4914f6cdd1dULL;
 
 static double rnd(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) / 9007199254740992.0;
+    return skin_rng_next(&rng_state);
 }
 
 /* Meshes with the graded grid, checks closed / manifold / oriented / Euler / vertices on the

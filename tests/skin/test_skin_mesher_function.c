@@ -16,6 +16,7 @@
 #include <stdlib.h>
 
 #include "fl_test.h"
+#include "skin_rng.h"
 #include "skin/skin_internal.h"
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
@@ -26,10 +27,7 @@ static uint64_t rng_state = 0x9e3779b97f4a7c15ULL;
 
 static double rnd(void)
 {
-    rng_state ^= rng_state << 13;
-    rng_state ^= rng_state >> 7;
-    rng_state ^= rng_state << 17;
-    return (double)(rng_state >> 11) / 9007199254740992.0;
+    return skin_rng_next(&rng_state);
 }
 
 /* np positive balls in [0, 3]^3 (radii 0.5..0.9), then nn negative balls (weights

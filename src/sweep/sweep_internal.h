@@ -156,6 +156,7 @@ typedef struct fl_sweep_walk {
     size_t answered; /* queries answered inside a region (statistics for tests) */
     size_t built;    /* regions built */
     size_t trimmed;  /* members let go because a region was full */
+    size_t boxes;    /* box distances computed while building regions */
 } fl_sweep_walk;
 
 /* Answers q3 from the region when certified: 1 with r filled (exact), else 0. */
@@ -172,6 +173,10 @@ int fl_sweep_walk_build(const fl_sweep *s, fl_sweep_walk *w, const double *q3, d
  * members let go from full regions. */
 void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built,
                                 size_t *trimmed);
+
+/* Box distances a cursor has computed over all its queries (its regions' included): with the
+ * distances (fl_closest.visited) the work of its queries, for tests comparing strategies. */
+size_t fl_sweep_cursor_box_tests(const fl_sweep_cursor *cursor);
 
 /* end of walk region */
 

@@ -125,7 +125,7 @@ static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t i
     double widen = st->slack + 16 * DBL_EPSILON * cur->travelled;
     double box_lo = -INFINITY;
     if (s->box) {
-        box_lo = sqrt(fl_sweep_box_dist2(s->box + 6 * (size_t)id, q3)) - widen;
+        box_lo = sqrt(fl_sweep_box_dist2(s->box[id].b, q3)) - widen;
         cur->boxes++;
         /* An internal region too goes on its box alone (issue #9): splitting it when it
          * reaches the front costs two box distances, its swept element a point-triangle solve
@@ -264,8 +264,8 @@ static void seed_descent(fl_sweep_cursor *cur, search *st, const double *q3)
     uint32_t id = 0;
     while (!fl_sweep_is_leaf(s->nodes + id)) {
         uint32_t a = s->nodes[id].child[0], b = s->nodes[id].child[1];
-        double da = fl_sweep_box_dist2(s->box + 6 * (size_t)a, q3);
-        double db = fl_sweep_box_dist2(s->box + 6 * (size_t)b, q3);
+        double da = fl_sweep_box_dist2(s->box[a].b, q3);
+        double db = fl_sweep_box_dist2(s->box[b].b, q3);
         cur->boxes += 2;
         id = db < da ? b : a;
     }
@@ -304,7 +304,7 @@ static void dfs_query(fl_sweep_cursor *cur, search *st, const double *q3, fl_clo
     double best = INFINITY, lim2 = INFINITY, bary[3] = {0}, point[3] = {0};
     size_t best_pos = 0, top = 0;
     int found = 0;
-    e[top++] = (fl_sweep_entry){fl_sweep_box_dist2(s->box, q3), 0, 0, 1};
+    e[top++] = (fl_sweep_entry){fl_sweep_box_dist2(s->box[0].b, q3), 0, 0, 1};
     cur->boxes++;
     while (top > 0) {
         fl_sweep_entry x = e[--top]; /* key: the squared box distance */
@@ -312,10 +312,10 @@ static void dfs_query(fl_sweep_cursor *cur, search *st, const double *q3, fl_clo
             dfs_cut(cur, (fl_sweep_entry){sqrt(x.key) - st->slack, 0, x.node, 1});
             continue;
         }
-        const fl_sweep_node *node = s->nodes + x.node;
-        if (fl_sweep_is_leaf(node)) {
+        const fl_sweep_box *box = s->box + x.node; /* in cache: its distance was just taken */
+        if (box->child[0] == FL_SWEEP_LEAF) {
             double b[3], c[3];
-            double d = fl_sweep_node_distance(s, node, q3, b, c);
+            double d = fl_sweep_node_distance(s, s->nodes + x.node, q3, b, c);
             st->visited++;
             dfs_cut(cur, (fl_sweep_entry){d, 0, x.node, 0});
             if (d < best || !found) { /* the first leaf always: a NaN must not leave none */
@@ -328,9 +328,9 @@ static void dfs_query(fl_sweep_cursor *cur, search *st, const double *q3, fl_clo
             }
             continue;
         }
-        uint32_t near = node->child[0], far = node->child[1];
-        double dn = fl_sweep_box_dist2(s->box + 6 * (size_t)near, q3);
-        double df = fl_sweep_box_dist2(s->box + 6 * (size_t)far, q3);
+        uint32_t near = box->child[0], far = box->child[1];
+        double dn = fl_sweep_box_dist2(s->box[near].b, q3);
+        double df = fl_sweep_box_dist2(s->box[far].b, q3);
         cur->boxes += 2;
         if (df < dn) {
             uint32_t t = near;

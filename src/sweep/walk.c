@@ -138,7 +138,7 @@ int fl_sweep_walk_build(const fl_sweep *s, fl_sweep_walk *w, const double *q3, d
         uint32_t id = stack[--top];
         const fl_sweep_node *node = s->nodes + id;
         if (s->box) {
-            double lo2 = fl_sweep_box_dist2(s->box + 6 * (size_t)id, q3);
+            double lo2 = fl_sweep_box_dist2(s->box[id].b, q3);
             w->boxes++;
             double cut = threshold + w->slack;
             if (lo2 >= cut * cut) {

@@ -85,8 +85,9 @@ static ld element_distance(const shape *sh, size_t e, const double *p)
 }
 
 /* Every node's box equals the union of the corners of the elements below it (recomputed here
- * from the input, bottom-up over the tree), its box record keeps its children, and, for meshes, every vertex below a node lies
- * within ε of its triangle (the oracle's distance, long double). */
+ * from the input, bottom-up over the tree), its box record keeps its children, and, for
+ * meshes, every vertex below a node lies within ε of its triangle (the oracle's distance,
+ * long double). */
 static void check_nodes(const fl_sweep *s, const shape *sh)
 {
     CHECK(s->box != NULL);

@@ -56,20 +56,29 @@ static void union_box(const double *a, const double *b, double *out)
     }
 }
 
+fl_sweep_box *fl_sweep_box_alloc(size_t n)
+{
+    if (n == 0 || n > SIZE_MAX / sizeof(fl_sweep_box)) return NULL;
+    return aligned_alloc(64, n * sizeof(fl_sweep_box)); /* a multiple of 64 bytes */
+}
+
 /* Fills s->box from the leaves up. Returns 0 (and leaves the boxes out) if a child does not
  * come after its parent, which the reverse pass needs. */
 static int fill_boxes(fl_sweep *s)
 {
     for (size_t i = s->node_count; i-- > 0;) {
         const fl_sweep_node *node = s->nodes + i;
-        double *box = s->box + 6 * i;
+        fl_sweep_box *box = s->box + i;
+        box->child[0] = node->child[0];
+        box->child[1] = node->child[1];
+        box->pad[0] = box->pad[1] = 0;
         if (fl_sweep_is_leaf(node)) {
-            leaf_box(s, node, box);
+            leaf_box(s, node, box->b);
             continue;
         }
         uint32_t a = node->child[0], b = node->child[1];
         if (a <= i || b <= i || a >= s->node_count || b >= s->node_count) return 0;
-        union_box(s->box + 6 * (size_t)a, s->box + 6 * (size_t)b, box);
+        union_box(s->box[a].b, s->box[b].b, box->b);
     }
     return 1;
 }
@@ -77,8 +86,8 @@ static int fill_boxes(fl_sweep *s)
 void fl_sweep_compute_boxes(fl_sweep *s)
 {
     if (!s->box) {
-        s->box = fl_alloc_array(s->node_count, 6 * sizeof *s->box);
-        fl_sweep_advise_huge(s->box, s->node_count * 6 * sizeof *s->box);
+        s->box = fl_sweep_box_alloc(s->node_count);
+        fl_sweep_advise_huge(s->box, s->node_count * sizeof *s->box);
     }
     if (s->box && !fill_boxes(s)) {
         free(s->box);

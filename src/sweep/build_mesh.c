@@ -656,16 +656,16 @@ static fl_status build_tree(fl_sweep *s, const fl_mesh *mesh, const fl_sweep_opt
                             fl_error *err)
 {
     /* The split records (32 bytes a triangle) and the ranges (8) are scratch in the box array
-     * (48 bytes a node, 2n - 1 nodes: room for 40n), which is filled only at the end by
+     * (64 bytes a node, 2n - 1 nodes: room for 40n), which is filled only at the end by
      * fl_sweep_compute_boxes: its pages are touched once for both uses, where separate blocks
      * would each pay a first-touch fault a page (tens of µs on this machine; issue #9). The
      * boxes are optional, so without them the scratch gets its own block. */
     size_t n = s->elements;
-    s->box = fl_alloc_array(s->node_count, 6 * sizeof *s->box);
+    s->box = fl_sweep_box_alloc(s->node_count);
     void *own = NULL, *scratch = s->box;
     if (scratch) {
-        fl_sweep_advise_huge(scratch, s->node_count * 6 * sizeof *s->box);
-        prefault(scratch, s->node_count * 6 * sizeof *s->box);
+        fl_sweep_advise_huge(scratch, s->node_count * sizeof *s->box);
+        prefault(scratch, s->node_count * sizeof *s->box);
     } else
         scratch = own = fl_alloc_array(n, sizeof(split_rec) + 2 * sizeof(uint32_t));
     if (!scratch) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for %zu triangles", n);

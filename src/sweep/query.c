@@ -47,6 +47,7 @@ struct fl_sweep_cursor {
     fl_sweep_walk walk;    /* the certified region of coherent streams (walk.c) */
     uint32_t *stack;       /* the walk region's search stack, one slot a node */
     double walk_reach;     /* the next region's reach in steps (walk_step) */
+    size_t boxes;          /* box distances computed, all queries (statistics for tests) */
 };
 
 static void fill_leaf(const fl_sweep *s, uint32_t leaf, const double *q3, fl_closest *r)
@@ -124,7 +125,22 @@ static void visit(fl_sweep_cursor *cur, search *st, const double *q3, uint32_t i
     double widen = st->slack + 16 * DBL_EPSILON * cur->travelled;
     double box_lo = -INFINITY;
     if (s->box) {
-        box_lo = sqrt(fl_sweep_box_dist2(s->box + 6 * (size_t)id, q3)) - widen;
+        box_lo = sqrt(fl_sweep_box_dist2(s->box[id].b, q3)) - widen;
+        cur->boxes++;
+        /* An internal region too goes on its box alone (issue #9): splitting it when it
+         * reaches the front costs two box distances, its swept element a point-triangle solve
+         * that on the bench streams paid for itself less often than the split (distances per
+         * query fell 62 -> 22 on the npm bunny's random stream, 26 -> 6 near the surface). Its
+         * upper bound still comes from the vertex inside it (upper_bound). */
+        if (!full && !fl_sweep_is_leaf(node)) {
+            if (s->triangles) {
+                double hi = upper_bound(s, node, q3, 0, st->slack);
+                if (hi < st->upper) st->upper = hi;
+            }
+            enqueue(cur, st, (fl_sweep_entry){box_lo + cur->travelled, cur->travelled, id, 1},
+                    replace);
+            return;
+        }
         if (!full && box_lo > st->upper) {
             enqueue(cur, st, (fl_sweep_entry){box_lo + cur->travelled, cur->travelled, id, 1},
                     replace);
@@ -198,8 +214,9 @@ static double shape_motion(const fl_sweep_cursor *cur)
 /* Starts over from the root ("the mesh is substituted with the base mesh", §4.2) when the
  * kept queue is unlikely to pay: the query jumped farther than the last distance (so most of
  * the queue would be dirty), the last query cost more than one from the root, or the queue
- * has grown far beyond what a query from the root needs. Otherwise accounts the move (§5.1). */
-static int advance(fl_sweep_cursor *cur, const double *q3, search *st)
+ * has grown far beyond what a query from the root needs. Otherwise accounts the move (§5.1).
+ * On a reset the root is queued, unless `no_root`: the caller searches from the root itself. */
+static int advance(fl_sweep_cursor *cur, const double *q3, search *st, int no_root)
 {
     double d2 = 0;
     for (int c = 0; c < 3; c++)
@@ -218,7 +235,7 @@ static int advance(fl_sweep_cursor *cur, const double *q3, search *st)
     cur->back_min = INFINITY;
     cur->started = 1;
     cur->reset_cost = SIZE_MAX;
-    visit(cur, st, q3, 0, 1, 0);
+    if (!no_root) visit(cur, st, q3, 0, 1, 0);
     return 1;
 }
 
@@ -247,8 +264,9 @@ static void seed_descent(fl_sweep_cursor *cur, search *st, const double *q3)
     uint32_t id = 0;
     while (!fl_sweep_is_leaf(s->nodes + id)) {
         uint32_t a = s->nodes[id].child[0], b = s->nodes[id].child[1];
-        double da = fl_sweep_box_dist2(s->box + 6 * (size_t)a, q3);
-        double db = fl_sweep_box_dist2(s->box + 6 * (size_t)b, q3);
+        double da = fl_sweep_box_dist2(s->box[a].b, q3);
+        double db = fl_sweep_box_dist2(s->box[b].b, q3);
+        cur->boxes += 2;
         id = db < da ? b : a;
     }
     double bary[3], c[3];
@@ -257,6 +275,88 @@ static void seed_descent(fl_sweep_cursor *cur, search *st, const double *q3)
     if (d + st->slack < st->upper) st->upper = d + st->slack;
     st->best_leaf = id;
     st->best_leaf_d = d;
+}
+
+/* The cut of a depth-first query (below): an entry at the back of the heap's array. */
+static void dfs_cut(fl_sweep_cursor *cur, fl_sweep_entry e)
+{
+    cur->h.e[cur->s->node_count - 1 - cur->back_n++] = e;
+}
+
+/* An exact query from the root (issue #9, random queries on small meshes): branch and bound
+ * depth first on the boxes alone, as CGAL's AABB tree does, instead of the priority process.
+ * Far from the shape almost every region is decided by its box (a few flops on squared
+ * distances), and a best-first queue paid a heap sift and an element solve (§4.1's swept
+ * triangle) per region on top: on the npm bunny's random stream the queue and the internal
+ * elements were about three quarters of the time. The nearer child goes first, so the first
+ * leaf reached is the seed descent's, and every later leaf or region whose box lies beyond the
+ * best distance so far (+ the rounding slack on both sides, as visit's test) is cut.
+ *
+ * The queue is still left as a cut of the hierarchy for §5.1 and §3.3: every cut region and
+ * measured leaf is queued at the back with its lower bound (box distance − slack, "partial":
+ * its element is measured if it reaches the front; a leaf's own distance, clean), the answer
+ * alone in the heap. The search stack lives at the front of the same array: a node is at most
+ * once on the stack or in the cut, so both fit in node_count slots. */
+static void dfs_query(fl_sweep_cursor *cur, search *st, const double *q3, fl_closest *r)
+{
+    const fl_sweep *s = cur->s;
+    fl_sweep_entry *e = cur->h.e;
+    double best = INFINITY, lim2 = INFINITY, bary[3] = {0}, point[3] = {0};
+    size_t best_pos = 0, top = 0;
+    int found = 0;
+    e[top++] = (fl_sweep_entry){fl_sweep_box_dist2(s->box[0].b, q3), 0, 0, 1};
+    cur->boxes++;
+    while (top > 0) {
+        fl_sweep_entry x = e[--top]; /* key: the squared box distance */
+        if (x.key > lim2) {
+            dfs_cut(cur, (fl_sweep_entry){sqrt(x.key) - st->slack, 0, x.node, 1});
+            continue;
+        }
+        const fl_sweep_box *box = s->box + x.node; /* in cache: its distance was just taken */
+        if (box->child[0] == FL_SWEEP_LEAF) {
+            double b[3], c[3];
+            double d = fl_sweep_node_distance(s, s->nodes + x.node, q3, b, c);
+            st->visited++;
+            dfs_cut(cur, (fl_sweep_entry){d, 0, x.node, 0});
+            if (d < best || !found) { /* the first leaf always: a NaN must not leave none */
+                found = 1;
+                best = d;
+                best_pos = s->node_count - cur->back_n;
+                lim2 = (d + 2 * st->slack) * (d + 2 * st->slack);
+                for (int k = 0; k < 3; k++)
+                    bary[k] = b[k], point[k] = c[k];
+            }
+            continue;
+        }
+        uint32_t near = box->child[0], far = box->child[1];
+        double dn = fl_sweep_box_dist2(s->box[near].b, q3);
+        double df = fl_sweep_box_dist2(s->box[far].b, q3);
+        cur->boxes += 2;
+        if (df < dn) {
+            uint32_t t = near;
+            near = far, far = t;
+            double u = dn;
+            dn = df, df = u;
+        }
+        /* Popped in order: the nearer on top; each is tested against the bound when popped. */
+        e[top++] = (fl_sweep_entry){df, 0, far, 1};
+        e[top++] = (fl_sweep_entry){dn, 0, near, 1};
+    }
+    /* The answer to the heap, the rest stays at the back with its smallest key. */
+    fl_sweep_entry ans = e[best_pos];
+    e[best_pos] = e[s->node_count - cur->back_n--];
+    e[0] = ans;
+    cur->h.n = 1;
+    cur->back_min = INFINITY;
+    for (size_t i = 0; i < cur->back_n; i++)
+        cur->back_min = fmin(cur->back_min, e[s->node_count - 1 - i].key);
+    r->distance = r->lower = r->upper = best;
+    r->element = s->nodes[ans.node].element;
+    r->exact = 1;
+    for (int k = 0; k < 3; k++)
+        r->bary[k] = bary[k], r->point[k] = point[k];
+    set_ball(cur, st, q3, ans.node, best);
+    cur->last_leaf = ans.node;
 }
 
 /* The priority process (§3.2) on the kept queue: refresh dirty fronts, split clean internal
@@ -268,16 +368,25 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
     search st = {INFINITY, FL_SWEEP_LEAF, INFINITY, fl_sweep_query_slack(s, q3), 0};
     fl_sweep_heap *h = &cur->h;
     cur->have_ball = 0;
-    if (advance(cur, q3, &st))
+    int dfs = tol == 0 && s->box;
+    if (advance(cur, q3, &st, dfs)) {
+        if (dfs) {
+            dfs_query(cur, &st, q3, r);
+            goto done;
+        }
         seed_descent(cur, &st, q3);
-    else
+    } else {
         seed_upper(cur, &st, q3);
+    }
     for (;;) {
         pending(cur);
         fl_sweep_entry top = h->e[0];
         const fl_sweep_node *node = s->nodes + top.node;
-        if (top.base != cur->travelled || top.partial) {
-            visit(cur, &st, q3, top.node, top.base == cur->travelled, 1);
+        int clean = top.base == cur->travelled;
+        /* A clean region known by its box alone is split like any other (visit); a leaf known
+         * by its box is measured. */
+        if (!clean || (top.partial && fl_sweep_is_leaf(node))) {
+            visit(cur, &st, q3, top.node, clean, 1);
             continue;
         }
         if (fl_sweep_is_leaf(node)) {
@@ -293,6 +402,7 @@ static void sweep_query(fl_sweep_cursor *cur, const double *q3, double tol, fl_c
         visit(cur, &st, q3, node->child[0], 0, 1);
         visit(cur, &st, q3, node->child[1], 0, 0);
     }
+done:
     if (cur->reset_cost == SIZE_MAX) cur->reset_cost = st.visited;
     cur->last_cost = st.visited;
     cur->last_distance = r->distance;
@@ -351,6 +461,11 @@ static int walk_step(fl_sweep_cursor *cur, const double *q3, fl_closest *r)
     for (int c = 0; c < 3; c++)
         cur->center[c] = q3[c];
     return 1;
+}
+
+size_t fl_sweep_cursor_box_tests(const fl_sweep_cursor *cursor)
+{
+    return cursor->boxes + cursor->walk.boxes;
 }
 
 void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built,

@@ -11,6 +11,16 @@
 
 #define FL_SWEEP_LEAF UINT32_MAX
 
+/* Per node, the box of its leaves' corners (boxes.c) and, in the same 64-byte record (the
+ * array is 64-byte aligned), the children a descent reads next: a search through the boxes
+ * touches one cache line a node instead of two (issue #9: on armadillo's random stream the
+ * depth-first search waited on those two loads for half its time). */
+typedef struct fl_sweep_box {
+    double b[6];       /* lo[3], hi[3] */
+    uint32_t child[2]; /* as the node's: child[0] = FL_SWEEP_LEAF for a leaf */
+    uint32_t pad[2];
+} fl_sweep_box;
+
 /* One bounding element: the points within `eps` of a segment (v[0..5]) or a triangle
  * (v[0..8]), §3.1 / §4.1. A leaf is an input element itself (eps = 0). `rep` is a point of
  * the shape inside the element (meshes only; see query.c for why). */
@@ -36,8 +46,8 @@ struct fl_sweep {
      * itself in `updates`; a cursor widens its kept intervals by the increase (query.c). */
     double moved;
     uint64_t updates;
-    /* Per node, the box of its leaves' corners: lo[3], hi[3] (boxes.c). NULL: not used. */
-    double *box;
+    /* Per node, its box and children (boxes.c). NULL: not used. */
+    fl_sweep_box *box;
 };
 
 /* Closest point on segment ab to p; *t in [0,1] is its parameter. Returns the squared
@@ -96,6 +106,10 @@ void fl_sweep_pose_to_world(const fl_sweep_pose *pose, fl_closest *r);
 
 /* The hierarchy a cursor searches (query.c). */
 const fl_sweep *fl_sweep_cursor_sweep(const fl_sweep_cursor *cursor);
+
+/* An uninitialised, 64-byte aligned box array of n records (free with free()); NULL when out
+ * of memory or n records overflow. */
+fl_sweep_box *fl_sweep_box_alloc(size_t n);
 
 /* (Re)computes s->box bottom-up from the leaves' corners; leaves it NULL when out of memory
  * (the boxes only speed queries up) or when a child is numbered before its parent. */
@@ -156,6 +170,7 @@ typedef struct fl_sweep_walk {
     size_t answered; /* queries answered inside a region (statistics for tests) */
     size_t built;    /* regions built */
     size_t trimmed;  /* members let go because a region was full */
+    size_t boxes;    /* box distances computed while building regions */
 } fl_sweep_walk;
 
 /* Answers q3 from the region when certified: 1 with r filled (exact), else 0. */
@@ -172,6 +187,10 @@ int fl_sweep_walk_build(const fl_sweep *s, fl_sweep_walk *w, const double *q3, d
  * members let go from full regions. */
 void fl_sweep_cursor_walk_stats(const fl_sweep_cursor *cursor, size_t *answered, size_t *built,
                                 size_t *trimmed);
+
+/* Box distances a cursor has computed over all its queries (its regions' included): with the
+ * distances (fl_closest.visited) the work of its queries, for tests comparing strategies. */
+size_t fl_sweep_cursor_box_tests(const fl_sweep_cursor *cursor);
 
 /* end of walk region */
 

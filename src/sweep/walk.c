@@ -138,12 +138,20 @@ int fl_sweep_walk_build(const fl_sweep *s, fl_sweep_walk *w, const double *q3, d
         uint32_t id = stack[--top];
         const fl_sweep_node *node = s->nodes + id;
         if (s->box) {
-            double lo2 = fl_sweep_box_dist2(s->box + 6 * (size_t)id, q3);
+            double lo2 = fl_sweep_box_dist2(s->box[id].b, q3);
+            w->boxes++;
             double cut = threshold + w->slack;
             if (lo2 >= cut * cut) {
                 prune(w, sqrt(lo2) - w->slack);
                 continue;
             }
+        }
+        if (s->box && !fl_sweep_is_leaf(node)) {
+            /* Within the threshold by its box: split without measuring its swept element
+             * (issue #9, as query.c's searches; the children's boxes decide). */
+            stack[top++] = node->child[1];
+            stack[top++] = node->child[0];
+            continue;
         }
         double d = fl_sweep_node_distance(s, node, q3, b, p);
         measured++;

@@ -85,8 +85,9 @@ static ld element_distance(const shape *sh, size_t e, const double *p)
 }
 
 /* Every node's box equals the union of the corners of the elements below it (recomputed here
- * from the input, bottom-up over the tree) and, for meshes, every vertex below a node lies
- * within ε of its triangle (the oracle's distance, long double). */
+ * from the input, bottom-up over the tree), its box record keeps its children, and, for
+ * meshes, every vertex below a node lies within ε of its triangle (the oracle's distance,
+ * long double). */
 static void check_nodes(const fl_sweep *s, const shape *sh)
 {
     CHECK(s->box != NULL);
@@ -123,7 +124,11 @@ static void check_nodes(const fl_sweep *s, const shape *sh)
                     b[c] = fmin(b[c], cb[c]), b[3 + c] = fmax(b[3 + c], cb[3 + c]);
                 }
         }
-        bad_box += memcmp(b, s->box + 6 * (size_t)order[i], 6 * sizeof *b) != 0;
+        const fl_sweep_box *kept = s->box + order[i];
+        bad_box += memcmp(b, kept->b, 6 * sizeof *b) != 0;
+        /* The record's children are the node's (the depth-first search reads them there). */
+        bad_box += kept->child[0] != node->child[0] ||
+                   (!fl_sweep_is_leaf(node) && kept->child[1] != node->child[1]);
     }
     for (size_t i = 0; sh->tri && i < n; i++) { /* ε contains every vertex below (§4.1) */
         const fl_sweep_node *node = s->nodes + i;
@@ -142,7 +147,8 @@ static void check_nodes(const fl_sweep *s, const shape *sh)
                 bad_eps += oracle_triangle(p[k], node->v, node->v + 3, node->v + 6) > node->eps;
         }
     }
-    CHECK_MSG(bad_box == 0, "%zu node boxes differ from the union of their corners", bad_box);
+    CHECK_MSG(bad_box == 0, "%zu node boxes differ from their corners' union or children",
+              bad_box);
     CHECK_MSG(bad_eps == 0, "%zu vertices outside their node's volume", bad_eps);
     free(box);
     free(order);

@@ -501,6 +501,9 @@ void fl_sweep_collapse_free(fl_sweep_collapse *h)
     free(h->split);
     free(h->err_self);
     free(h->err_parent);
+    free(h->xyz_ref);
+    free(h->err_self_ref);
+    free(h->err_parent_ref);
     free(h);
 }
 
@@ -509,5 +512,6 @@ size_t fl_collapse_bytes(const fl_sweep_collapse *h)
     return sizeof *h + 3 * h->vertex_count * sizeof(double) + h->tri_count * sizeof *h->tri +
            2 * (h->split_count + 1) * sizeof(uint32_t) +
            h->old_start[h->split_count] * sizeof(uint32_t) + h->base_count * sizeof(uint32_t) +
-           h->split_count * sizeof *h->split + 2 * h->vertex_count * sizeof(double);
+           h->split_count * sizeof *h->split + 2 * h->vertex_count * sizeof(double) +
+           (h->xyz_ref ? 5 * h->vertex_count * sizeof(double) : 0); /* §5.3 reference */
 }

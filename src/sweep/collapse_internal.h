@@ -51,7 +51,7 @@
 
 /* One triangle of the hierarchy (24 bytes). */
 typedef struct fl_collapse_tri {
-    uint32_t v[3];      /* vertex indices into the input vertices (positions never move) */
+    uint32_t v[3];      /* vertex indices (positions move only by §5.3 updates) */
     uint32_t rep;       /* a vertex of a fine triangle owned by t (upper bounds); NONE if none */
     uint32_t creator;   /* the collapse that made t; NONE for a fine triangle */
     uint32_t destroyer; /* the collapse that consumed t; NONE for a base-mesh triangle */
@@ -65,8 +65,8 @@ typedef struct fl_collapse_split {
 
 struct fl_sweep_collapse {
     size_t vertex_count;
-    double *xyz; /* copy of the input vertices */
-    double scale; /* largest |coordinate|, for the rounding slack */
+    double *xyz; /* the current vertex positions (the input's, or a §5.3 update's) */
+    double scale; /* largest |coordinate| ever held, for the rounding slack */
     size_t fine_count;
     size_t tri_count;
     fl_collapse_tri *tri;

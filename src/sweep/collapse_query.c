@@ -19,7 +19,8 @@
  * (docs/sweep.md "Coherence"; the paper resets periodically, we reset when coherence stops
  * paying). A reset starts from a fixed start level: the base mesh with the last collapses
  * split again up to a few dozen triangles (start_level). A rigid motion of the mesh
- * (§5.2) is a move of the query carried into the mesh's frame (rigid.c's pose helpers).
+ * (§5.2) is a move of the query carried into the mesh's frame (rigid.c's pose helpers); a
+ * deformation (§5.3, collapse_deform.c) is caught up with before the next query (catch_up).
  *
  * Arrays only: the heap (one entry per hierarchy triangle at most, since a triangle enters
  * once per refinement from the base mesh), the done flags of the splits, the list of done

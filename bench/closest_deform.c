@@ -5,6 +5,11 @@
  *               (Guéziec §5.2: the hierarchy is kept, its volumes refitted bottom-up); one
  *               fl_sweep_cursor for the whole run, so the walk's kept queue crosses frames.
  * MODE rebuild: fl_sweep_build every frame and a fresh cursor on it.
+ * MODE collapse_update: the edge-collapse hierarchy (§4.2-4.3): fl_sweep_collapse_build on
+ *               frame 0, then fl_sweep_collapse_update_vertices every later frame (§5.3's
+ *               displacement inflation); one fl_sweep_collapse_cursor for the whole run.
+ * MODE collapse_refit: as collapse_update plus fl_sweep_collapse_refit after every update.
+ * MODE collapse_rebuild: fl_sweep_collapse_build every frame and a fresh cursor on it.
  * MODE brute:   every triangle for the first min(200, QUERIES) queries of frame 0 only.
  * Times (wall and process CPU) cover the build/update and the queries, not the making of the
  * frame's vertices or queries (the same for every method). Writes the distances, one double a
@@ -81,17 +86,44 @@ static int move(int rebuild, const ce_mesh *m, double *xyz, fl_sweep **sweep,
     return st != FL_OK;
 }
 
+/* The edge-collapse hierarchy's counterpart of move(): refit 1 adds a refit to each update. */
+static int move_collapse(int rebuild, int refit, const ce_mesh *m, double *xyz,
+                         fl_sweep_collapse **h, fl_sweep_collapse_cursor **cursor)
+{
+    fl_error err;
+    fl_status st;
+    if (*h && !rebuild) {
+        st = fl_sweep_collapse_update_vertices(*h, xyz, (size_t)m->v, &err);
+        if (st == FL_OK && refit) st = fl_sweep_collapse_refit(*h, &err);
+    } else {
+        fl_sweep_collapse_cursor_free(*cursor);
+        fl_sweep_collapse_free(*h);
+        *cursor = NULL;
+        fl_mesh fm = {(size_t)m->v, xyz, (size_t)m->t, m->tri};
+        st = fl_sweep_collapse_build(&fm, NULL, h, &err);
+        if (st == FL_OK) st = fl_sweep_collapse_cursor_new(*h, cursor, &err);
+    }
+    if (st != FL_OK) fprintf(stderr, "closest_deform: %s\n", err.message);
+    return st != FL_OK;
+}
+
 int main(int argc, char **argv)
 {
-    if (argc < 3 || (strcmp(argv[2], "update") && strcmp(argv[2], "rebuild") &&
-                     strcmp(argv[2], "brute"))) {
-        fprintf(stderr, "usage: closest_deform PREFIX update|rebuild|brute [FRAMES [QUERIES]]\n");
+    static const char *modes[] = {"update", "rebuild", "brute", "collapse_update",
+                                  "collapse_refit", "collapse_rebuild"};
+    int mode = -1;
+    for (int i = 0; argc >= 3 && i < 6; i++)
+        if (strcmp(argv[2], modes[i]) == 0) mode = i;
+    if (mode < 0) {
+        fprintf(stderr, "usage: closest_deform PREFIX update|rebuild|brute|collapse_update|"
+                        "collapse_refit|collapse_rebuild [FRAMES [QUERIES]]\n");
         return 2;
     }
+    int collapse = mode >= 3;
     (void)ce_read_queries; /* closest_eval.h's query files: the queries here are made per frame */
     int frames = argc > 3 ? atoi(argv[3]) : 20;
     long nq = argc > 4 ? atol(argv[4]) : 10000;
-    int rebuild = strcmp(argv[2], "rebuild") == 0, is_brute = strcmp(argv[2], "brute") == 0;
+    int rebuild = mode == 1 || mode == 5, is_brute = mode == 2;
     ce_mesh m;
     if (frames < 1 || nq < 1 || ce_read_mesh(argv[1], &m)) {
         fprintf(stderr, "closest_deform: bad arguments or unreadable %s.mesh\n", argv[1]);
@@ -107,6 +139,9 @@ int main(int argc, char **argv)
     if (!xyz || !q || !d) return 1;
     fl_sweep *sweep = NULL;
     fl_sweep_cursor *cursor = NULL;
+    fl_sweep_collapse *ch = NULL;
+    fl_sweep_collapse_cursor *ccursor = NULL;
+    size_t visited = 0;
     clocks moved = {0, 0}, queried = {0, 0};
     double checksum = 0, build0 = 0;
     int failed = 0;
@@ -119,32 +154,41 @@ int main(int argc, char **argv)
             sum = brute(&m, xyz, q, per_frame, df);
             clocks_add(&queried, t);
         } else {
-            failed = move(rebuild, &m, xyz, &sweep, &cursor);
+            failed = collapse ? move_collapse(rebuild, mode == 4, &m, xyz, &ch, &ccursor)
+                              : move(rebuild, &m, xyz, &sweep, &cursor);
             clocks_add(&moved, t);
             if (f == 0) build0 = moved.wall;
             t = clocks_now();
             for (size_t i = 0; i < per_frame && !failed; i++) {
                 fl_closest r;
                 fl_error err;
-                failed = fl_sweep_cursor_closest(cursor, q + 3 * i, 0, &r, &err) != FL_OK;
+                failed = (collapse ? fl_sweep_collapse_cursor_closest(ccursor, q + 3 * i, 0, &r, &err)
+                                   : fl_sweep_cursor_closest(cursor, q + 3 * i, 0, &r, &err)) !=
+                         FL_OK;
                 df[i] = r.distance;
                 sum += r.distance;
+                visited += r.visited;
             }
             clocks_add(&queried, t);
         }
         checksum += sum;
-        printf("FRAME f=%d move_s=%.6f query_s=%.6f checksum=%.17g\n", f, moved.wall - m0.wall,
-               queried.wall - q0.wall, sum);
+        printf("FRAME f=%d move_s=%.6f query_s=%.6f move_cpu_s=%.6f query_cpu_s=%.6f "
+               "checksum=%.17g\n",
+               f, moved.wall - m0.wall, queried.wall - q0.wall, moved.cpu - m0.cpu,
+               queried.cpu - q0.cpu, sum);
     }
     fl_sweep_cursor_free(cursor);
     fl_sweep_free(sweep);
+    fl_sweep_collapse_cursor_free(ccursor);
+    fl_sweep_collapse_free(ch);
     if (!failed) {
         ce_write_distances(argv[1], "deform", argv[2], d, (size_t)frames * per_frame);
         double total = moved.wall + queried.wall, n = (double)frames * (double)per_frame;
         printf("RESULT method=ours-%s frames=%d queries=%zu build0_s=%.6f move_s=%.6f "
-               "query_s=%.6f total_s=%.6f cpu_s=%.6f qps=%.1f checksum=%.17g\n",
+               "query_s=%.6f total_s=%.6f cpu_s=%.6f move_cpu_s=%.6f qps=%.1f visited=%zu "
+               "checksum=%.17g\n",
                argv[2], frames, per_frame, build0, moved.wall, queried.wall, total,
-               moved.cpu + queried.cpu, n / total, checksum);
+               moved.cpu + queried.cpu, moved.cpu, n / total, visited, checksum);
     }
     free(xyz);
     free(q);

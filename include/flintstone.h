@@ -1934,8 +1934,11 @@ fl_status fl_sweep_update_vertices(fl_sweep *sweep, const double *xyz, fl_error 
  * of §3.2 and answers exactly, or within a tolerance, like fl_sweep_closest. A cursor keeps
  * the refined mesh between coherent queries (§5.1) and goes back to a start level (the base
  * mesh with its last collapses split again, docs/sweep.md) when that stops paying. Same input rules and results (fl_closest) as fl_sweep_build/fl_sweep_closest;
- * `element` is an input triangle index. The hierarchy is immutable after building and may be
- * shared by threads; a cursor belongs to one thread. */
+ * `element` is an input triangle index. A deforming mesh keeps its hierarchy (§5.3):
+ * fl_sweep_collapse_update_vertices inflates the error radii by the vertex displacements and
+ * fl_sweep_collapse_refit re-measures them at the current positions. Between such updates
+ * the hierarchy is read-only and may be shared by threads (an update must not run while it is
+ * queried); a cursor belongs to one thread. */
 
 typedef struct fl_sweep_collapse fl_sweep_collapse;
 typedef struct fl_sweep_collapse_cursor fl_sweep_collapse_cursor;
@@ -2019,6 +2022,29 @@ fl_status fl_sweep_collapse_knearest(const fl_sweep_collapse *hierarchy, const d
 /* fl_sweep_collapse_cursor_within through a temporary cursor (one query from the base mesh). */
 fl_status fl_sweep_collapse_within(const fl_sweep_collapse *hierarchy, const double *q,
                                    double radius, fl_sweep_hits *out, fl_error *err);
+
+/* Moves the vertices of a collapse hierarchy to xyz (3 * vertex_count doubles: vertex_count
+ * must be the built mesh's, same triangles, finite with |x| <= 1e150) without rebuilding, §5.3's second
+ * method: every vertex's displacement from the positions the errors were measured at (the
+ * build's or the last refit's) is propagated along the collapse sequence and inflates the
+ * error radii, O(V + T) with no geometry, so the answers afterwards are exact for the new mesh
+ * (docs/sweep.md "Deformation"). The inflation grows with the distance from those positions
+ * (it does not accumulate over updates: updating back to them restores the measured radii);
+ * fl_sweep_collapse_refit tightens it. Cursors on the hierarchy stay valid and exact: their
+ * next query replays their current errors and widens their kept intervals by the largest
+ * displacement (§5.1, §5.2). FL_ERR_USAGE for NULL, FL_ERR_INPUT for another vertex count or a
+ * bad coordinate and
+ * FL_ERR_NOMEM (the hierarchy is then unchanged). */
+fl_status fl_sweep_collapse_update_vertices(fl_sweep_collapse *hierarchy, const double *xyz,
+                                            size_t vertex_count, fl_error *err);
+
+/* Re-measures the error radii at the current vertex positions by replaying the recorded
+ * collapse sequence (the ownership of input triangles and their distances, as the build does,
+ * but without the simplification), and makes these positions the reference of later
+ * fl_sweep_collapse_update_vertices calls: after a large deformation, tighter radii at about a
+ * third of a rebuild's cost (docs/sweep.md). Cursors stay valid. FL_ERR_USAGE for NULL,
+ * FL_ERR_NOMEM (the hierarchy is then unchanged). */
+fl_status fl_sweep_collapse_refit(fl_sweep_collapse *hierarchy, fl_error *err);
 
 /* end of sweep_collapse */
 

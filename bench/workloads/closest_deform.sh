@@ -3,9 +3,12 @@
 # third workload; docs/sweep.md "Deforming mesh against CGAL"). Frames and queries come from
 # bench/deform_eval.h, bit-identical on both sides: a sine wave along x travelling along y
 # (amplitude 1% of the diagonal), and per frame a stretch of one random walk (steps 0.1% of the
-# diagonal) continuing across frames. Ours twice: `update` (one build, then
-# fl_sweep_update_vertices every frame, one cursor throughout) and `rebuild` (fl_sweep_build and
-# a new cursor every frame); CGAL rebuilds its tree + accelerate_distance_queries every frame.
+# diagonal) continuing across frames. Ours three times: `update` (one build, then
+# fl_sweep_update_vertices every frame, one cursor throughout), `rebuild` (fl_sweep_build and
+# a new cursor every frame) and `collapse_update` (the edge-collapse hierarchy: one
+# fl_sweep_collapse_build, then fl_sweep_collapse_update_vertices every frame, §5.3's
+# displacement inflation, one collapse cursor throughout); CGAL rebuilds its tree +
+# accelerate_distance_queries every frame.
 # Times cover the build/update and the queries of all frames; the median over BENCH_ROUNDS
 # alternating processes (update, rebuild, CGAL). Brute force (every triangle) runs once on frame
 # 0's first 200 queries for its queries per second and as a third check. All distances are
@@ -37,7 +40,7 @@ one_mesh() { # NAME FILE NOTES
   "$BENCH_BIN/eval_closest" prepare "$file" "$prefix" 1 >/dev/null ||
     { echo "ERROR|closest_deform_$name|prepare failed"; return 0; }
   for ((r = 0; r < BENCH_ROUNDS; r++)); do
-    for mode in update rebuild cgal; do
+    for mode in update rebuild collapse_update cgal; do
       if [ $mode = cgal ]; then
         line=$("$BENCH_BIN/cgal_closest_deform" "$prefix" "$NF" "$NQ" | grep '^RESULT')
       else
@@ -60,7 +63,7 @@ one_mesh() { # NAME FILE NOTES
   for k in "${!qps[@]}"; do qps[$k]=$(median <<<"${qps[$k]%$'\n'}"); done
   local load diff
   load=$(cut -d' ' -f1-3 /proc/loadavg)
-  for mode in update rebuild; do
+  for mode in update rebuild collapse_update; do
     diff=$(agree "closest_deform_${name}_$mode" "$prefix.deform.$mode.d" "$prefix.deform.cgal.d") ||
       { echo "$diff"; continue; }
     printf 'ROW|closest_deform_%s_%s|%s|CGAL AABB_tree (rebuilt every frame)|%s|%s|%s; %s frames x %s walk queries; queries/s (wall) ours %.0f, CGAL %.0f, brute force %.0f (frame 0, first 200 queries; ours %.0fx brute); %s %s s of ours, CGAL rebuilds %s s (of the totals); CPU ours %s s, CGAL %s s; distances agree with CGAL to %s (brute force to %s); %s UTC, load %s\n' \
@@ -68,7 +71,7 @@ one_mesh() { # NAME FILE NOTES
       "$(awk -v o="${cpu[$mode]}" -v p="${cpu[cgal]}" 'BEGIN {printf "%.2f", o / p}')" "$notes" \
       "$NF" "$NQ" "${qps[$mode]}" "${qps[cgal]}" "$brute_qps" \
       "$(awk -v o="${qps[$mode]}" -v b="$brute_qps" 'BEGIN {print o / b}')" \
-      "$([ $mode = update ] && echo "build + updates" || echo "builds")" "${wall[${mode}_move]}" \
+      "$([ $mode = rebuild ] && echo "builds" || echo "build + updates")" "${wall[${mode}_move]}" \
       "${wall[cgal_move]}" "${cpu[$mode]}" "${cpu[cgal]}" "$diff" "$bdiff" \
       "$(date -u '+%Y-%m-%d %H:%M')" "$load"
   done

@@ -7,7 +7,8 @@
  * triangles to the nearest new triangle and grows v's error to reach them (the invariant of
  * collapse_internal.h); this, not the safety checks, is what the queries' exactness rests on,
  * so a mesh of any topology gives correct bounds. Arrays only: triangles, corner lists and
- * ownership lists are indices into growable arrays, no per-node allocation (§4.2). */
+ * ownership lists are indices into growable arrays, no per-node allocation (§4.2). The
+ * ownership hand-over is shared with the §5.3 refit (collapse_owners.c). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -244,41 +245,6 @@ static int collapse_safe(const builder *b, uint32_t u, uint32_t v, const ring *r
     return 1;
 }
 
-/* ---- ownership: the bound invariant ---- */
-
-static double tri_point_distance(const builder *b, const fl_collapse_tri *t, const double *p)
-{
-    double bary[3], c[3];
-    return sqrt(fl_sweep_triangle_closest(p, vert(b, t->v[0]), vert(b, t->v[1]),
-                                          vert(b, t->v[2]), bary, c));
-}
-
-/* Hands fine triangle f to the new triangle (first .. end) nearest its centroid and grows that
- * triangle's r(t) to reach f's three vertices (then f, by convexity). */
-static void assign_fine(builder *b, uint32_t f, uint32_t first, uint32_t end, double scale)
-{
-    const uint32_t *fv = b->m->tri + 3 * (size_t)f;
-    double centroid[3];
-    for (int c = 0; c < 3; c++)
-        centroid[c] = (vert(b, fv[0])[c] + vert(b, fv[1])[c] + vert(b, fv[2])[c]) / 3;
-    uint32_t best = first;
-    double best_d = INFINITY;
-    for (uint32_t t = first; t < end; t++) {
-        double d = tri_point_distance(b, tri_at(b, t), centroid);
-        if (d < best_d) best_d = d, best = t;
-    }
-    fl_collapse_tri *t = tri_at(b, best);
-    double *r = (double *)b->rad.data + best;
-    for (int k = 0; k < 3; k++) {
-        double d = fl_sweep_widen(tri_point_distance(b, t, vert(b, fv[k])), scale);
-        if (!(*r >= d)) *r = d;
-    }
-    if (t->rep == FL_COLLAPSE_NONE) t->rep = fv[0];
-    uint32_t *head = u32_at(&b->fhead, best);
-    b->fnext[f] = *head;
-    *head = f;
-}
-
 /* Records collapse k (u -> v) in the vertex errors and chains (collapse_internal.h): v's
  * error grows to reach the new triangles' fine ones; k follows the last collapses of u's and
  * v's chains. */
@@ -287,13 +253,7 @@ static int record_errors(builder *b, uint32_t k, uint32_t u, uint32_t v, uint32_
 {
     fl_collapse_split x = {u, v, FL_COLLAPSE_NONE};
     if (fl_vec_push(&b->split, &x, 1)) return -1;
-    double e = b->err[v];
-    for (uint32_t t = first; t < end; t++) {
-        double r = ((double *)b->rad.data)[t];
-        if (!(e >= r)) e = r;
-    }
-    b->err_parent[u] = b->err[v];
-    b->err[v] = e;
+    fl_collapse_grow_error(b->rad.data, first, end, u, v, b->err, b->err_parent);
     fl_collapse_split *s = b->split.data;
     if (b->last[u] != FL_COLLAPSE_NONE) s[b->last[u]].next = k;
     if (b->last[v] != FL_COLLAPSE_NONE) s[b->last[v]].next = k;
@@ -319,14 +279,8 @@ static int collapse(builder *b, uint32_t u, uint32_t v, const ring *ru, double s
         if (tri_add(b, nv, k)) return -1;
     }
     uint32_t end = (uint32_t)b->tris.count;
-    for (size_t i = 0; i < ru->n; i++) {
-        uint32_t f = *u32_at(&b->fhead, ru->t[i]);
-        while (f != FL_COLLAPSE_NONE) {
-            uint32_t next = b->fnext[f];
-            assign_fine(b, f, first, end, scale);
-            f = next;
-        }
-    }
+    fl_collapse_owners o = {b->m->xyz, b->tris.data, b->rad.data, b->fhead.data, b->fnext, scale};
+    fl_collapse_hand_over(&o, ru->t, ru->n, first, end);
     if (record_errors(b, k, u, v, first, end)) return -1;
     b->chead[u] = FL_COLLAPSE_NONE;
     for (uint32_t t = first; t < end; t++)
@@ -547,6 +501,9 @@ void fl_sweep_collapse_free(fl_sweep_collapse *h)
     free(h->split);
     free(h->err_self);
     free(h->err_parent);
+    free(h->xyz_ref);
+    free(h->err_self_ref);
+    free(h->err_parent_ref);
     free(h);
 }
 
@@ -555,5 +512,6 @@ size_t fl_collapse_bytes(const fl_sweep_collapse *h)
     return sizeof *h + 3 * h->vertex_count * sizeof(double) + h->tri_count * sizeof *h->tri +
            2 * (h->split_count + 1) * sizeof(uint32_t) +
            h->old_start[h->split_count] * sizeof(uint32_t) + h->base_count * sizeof(uint32_t) +
-           h->split_count * sizeof *h->split + 2 * h->vertex_count * sizeof(double);
+           h->split_count * sizeof *h->split + 2 * h->vertex_count * sizeof(double) +
+           (h->xyz_ref ? 5 * h->vertex_count * sizeof(double) : 0); /* §5.3 reference */
 }

@@ -51,7 +51,7 @@
 
 /* One triangle of the hierarchy (24 bytes). */
 typedef struct fl_collapse_tri {
-    uint32_t v[3];      /* vertex indices into the input vertices (positions never move) */
+    uint32_t v[3];      /* vertex indices (positions move only by §5.3 updates) */
     uint32_t rep;       /* a vertex of a fine triangle owned by t (upper bounds); NONE if none */
     uint32_t creator;   /* the collapse that made t; NONE for a fine triangle */
     uint32_t destroyer; /* the collapse that consumed t; NONE for a base-mesh triangle */
@@ -65,8 +65,8 @@ typedef struct fl_collapse_split {
 
 struct fl_sweep_collapse {
     size_t vertex_count;
-    double *xyz; /* copy of the input vertices */
-    double scale; /* largest |coordinate|, for the rounding slack */
+    double *xyz; /* the current vertex positions (the input's, or a §5.3 update's) */
+    double scale; /* largest |coordinate| ever held, for the rounding slack */
     size_t fine_count;
     size_t tri_count;
     fl_collapse_tri *tri;
@@ -79,6 +79,15 @@ struct fl_sweep_collapse {
     fl_collapse_split *split; /* split_count entries */
     double *err_self;   /* per vertex: its error when contracted (base vertices: final) */
     double *err_parent; /* per vertex: its parent's error before contracting it (0 if none) */
+    /* §5.3 deformation (collapse_deform.c): the positions the errors were measured at and
+     * those errors; NULL while xyz is still those positions (err_* then are the measured
+     * errors, otherwise they are the measured ones inflated by the displacements). */
+    double *xyz_ref;
+    double *err_self_ref, *err_parent_ref;
+    /* Every update adds its largest vertex displacement to `moved` and counts itself in
+     * `updates`; a cursor catches up before its next query (collapse_query.c). */
+    double moved;
+    uint64_t updates;
 };
 
 /* Whether triangle t is in the current mesh given the done splits (see above). */
@@ -119,6 +128,39 @@ static inline uint32_t fl_collapse_pending(const fl_sweep_collapse *h, const uin
         if (d != FL_COLLAPSE_NONE && !done[d]) return d;
     }
     return FL_COLLAPSE_NONE;
+}
+
+/* The ownership of fine triangles while the collapse sequence runs (collapse_owners.c),
+ * shared by the build and the §5.3 refit, which replays the sequence at new positions: every
+ * triangle t owns the fine triangles of the list fhead[t] -> fnext[f] -> ...; rad[t] is r(t),
+ * the largest distance of their vertices to t (widened for rounding). */
+typedef struct fl_collapse_owners {
+    const double *xyz;
+    fl_collapse_tri *tri; /* the fine triangles first: tri[f].v are their vertices */
+    double *rad;          /* per triangle */
+    uint32_t *fhead;      /* per triangle */
+    uint32_t *fnext;      /* per fine triangle */
+    double scale;
+} fl_collapse_owners;
+
+/* Collapse k consumed the n_old triangles `old` and made [first, end): hands every fine
+ * triangle they own to the new triangle nearest its centroid and grows that one's r(t) to
+ * reach it (and its `rep`, if none yet, becomes one of its vertices). */
+void fl_collapse_hand_over(fl_collapse_owners *o, const uint32_t *old, size_t n_old,
+                           uint32_t first, uint32_t end);
+
+/* Records the errors of collapse u -> v that made [first, end) (collapse_internal.h): the
+ * parent's error before goes to err_parent[u]; v's error grows to reach the new triangles'
+ * r(t). err[u] stays u's error when contracted. */
+static inline void fl_collapse_grow_error(const double *rad, uint32_t first, uint32_t end,
+                                          uint32_t u, uint32_t v, double *err,
+                                          double *err_parent)
+{
+    double e = err[v];
+    for (uint32_t t = first; t < end; t++)
+        if (!(e >= rad[t])) e = rad[t];
+    err_parent[u] = err[v];
+    err[v] = e;
 }
 
 /* Bytes held by the hierarchy (the fixed tables). */

@@ -19,7 +19,8 @@
  * (docs/sweep.md "Coherence"; the paper resets periodically, we reset when coherence stops
  * paying). A reset starts from a fixed start level: the base mesh with the last collapses
  * split again up to a few dozen triangles (start_level). A rigid motion of the mesh
- * (§5.2) is a move of the query carried into the mesh's frame (rigid.c's pose helpers).
+ * (§5.2) is a move of the query carried into the mesh's frame (rigid.c's pose helpers); a
+ * deformation (§5.3, collapse_deform.c) is caught up with before the next query (catch_up).
  *
  * Arrays only: the heap (one entry per hierarchy triangle at most, since a triangle enters
  * once per refinement from the base mesh), the done flags of the splits, the list of done
@@ -54,6 +55,8 @@ struct fl_sweep_collapse_cursor {
     int have_ball;    /* §3.3: the last exact answer's ball is valid */
     double ball_r;    /* around q: within it, ball_leaf stays the closest */
     uint32_t ball_leaf;
+    double moved_seen;     /* h->moved and h->updates when the cursor last caught up with */
+    uint64_t updates_seen; /* the mesh's deformation (§5.3, collapse_deform.c) */
 };
 
 typedef struct query_state {
@@ -200,6 +203,26 @@ static void reset_to_base(fl_sweep_collapse_cursor *c, query_state *st)
             if (fl_collapse_present(h, c->done, h->old[i])) visit(c, st, h->old[i]);
 }
 
+/* §5.3 before a query, after fl_sweep_collapse_update_vertices or _refit: the current errors
+ * are those of the new tables, replayed in the order the done splits ran (a reset undoes them
+ * back to err_self, so that order gives the state); every fine triangle moved by at most the
+ * displacements summed since (widened for the rounding of the sums), so, as for a query move
+ * (§5.1), the kept keys stay lower bounds once the travelled distance grows by that much and
+ * go dirty. The §3.3 ball is forgotten. */
+static void catch_up(fl_sweep_collapse_cursor *c)
+{
+    const fl_sweep_collapse *h = c->h;
+    if (c->updates_seen == h->updates) return;
+    memcpy(c->cur, h->err_self, h->vertex_count * sizeof *c->cur);
+    for (size_t i = 0; i < c->done_count; i++)
+        fl_collapse_split_errors(h, c->cur, c->done_list[i]);
+    if (h->moved != c->moved_seen)
+        c->travelled += h->moved - c->moved_seen + 4 * DBL_EPSILON * h->moved;
+    c->have_ball = 0;
+    c->moved_seen = h->moved;
+    c->updates_seen = h->updates;
+}
+
 /* §5.1 bookkeeping before a query: account the move, or go back to the base mesh. */
 static void advance(fl_sweep_collapse_cursor *c, query_state *st)
 {
@@ -246,6 +269,7 @@ static void answer_interval(const fl_sweep_collapse *h, const query_state *st, d
 static void query_begin(fl_sweep_collapse_cursor *c, query_state *st, const double *q3,
                         int want_upper)
 {
+    catch_up(c);
     *st = (query_state){{q3[0], q3[1], q3[2]}, 0, INFINITY, FL_COLLAPSE_NONE, INFINITY, 0,
                         want_upper};
     double m = fmax(fmax(fabs(q3[0]), fabs(q3[1])), fabs(q3[2]));
@@ -417,6 +441,8 @@ fl_status fl_sweep_collapse_cursor_new(const fl_sweep_collapse *hierarchy,
         if (c->cur)
             memcpy(c->cur, hierarchy->err_self, hierarchy->vertex_count * sizeof *c->cur);
         c->start_split = start_level(hierarchy);
+        c->moved_seen = hierarchy->moved;
+        c->updates_seen = hierarchy->updates;
     }
     if (!c || !c->heap.e || !c->done || !c->done_list || !c->stack || !c->cur ||
         !c->key) {
@@ -463,6 +489,7 @@ fl_status fl_sweep_collapse_cursor_closest(fl_sweep_collapse_cursor *cursor, con
     if (!(tolerance >= 0)) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "tolerance must be >= 0");
     fl_status st = check_query(q, err);
     if (st != FL_OK) return st;
+    catch_up(cursor);
     if (cursor->have_ball) { /* §3.3: the cursor's state stays that of the ball's centre */
         double d2 = 0;
         for (int i = 0; i < 3; i++)

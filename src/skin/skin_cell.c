@@ -141,7 +141,7 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         double pad = SKIN_WALK_SLACK * (fabs(tv) + t * (fabs(s->nu_lo[c]) + fabs(s->nu_hi[c])));
         if (!(tv >= t * s->nu_lo[c] - pad && tv <= t * s->nu_hi[c] + pad)) return -1;
     }
-    *val = q2 - t / (1 - t) * p2 + t * s->w;
+    *val = q2 - t / (1 - t) * p2 + t * skin_weight(sk->balls, s, a, f);
     return 1;
 }
 

@@ -80,7 +80,7 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_si
     s->k = (uint8_t)k;
     for (int i = 0; i < 4; i++)
         s->ball[i] = i <= k ? idx[i] : UINT32_MAX;
-    double a[3], e[3][3], f[3], g[3][3], rhs[3];
+    double a[3], e[3][3], g[3][3], rhs[3];
     skin_frame(xyzw, s, a, e);
     for (int i = 0; i < k; i++) {
         for (int j = 0; j < k; j++)
@@ -104,11 +104,6 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_si
             eta += s->ginv[i][j] * rhs[j];
         s->mu_f[i] = eta;
     }
-    skin_focus(s, a, e, f); /* the one formula every reader of f uses (skin_internal.h) */
-    double fa2 = 0;
-    for (int c = 0; c < 3; c++)
-        fa2 += (f[c] - a[c]) * (f[c] - a[c]);
-    s->w = fa2 - b0[3]; /* the orthogonal ball: |f - z_0|^2 - w_0 - w = 0 */
     return 0;
 }
 
@@ -142,7 +137,7 @@ static double simplex_value(const fl_skin_function *sk, const skin_simplex *s, c
         q2 += (x[c] - proj[c]) * (x[c] - proj[c]);
         p2 += (proj[c] - f[c]) * (proj[c] - f[c]);
     }
-    return q2 - t / (1 - t) * p2 + t * s->w;
+    return q2 - t / (1 - t) * p2 + t * skin_weight(sk->balls, s, a, f);
 }
 
 int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell)
@@ -254,9 +249,13 @@ static int subsets(fl_vec *v, const double *xyzw, size_t n)
  * face (tet = UINT32_MAX: its power face nu_X is unbounded). */
 typedef struct rt_tuple {
     uint32_t v[4]; /* sorted ball indices, UINT32_MAX padding */
-    uint32_t tet;
-    uint32_t hull; /* the hull face it comes from (tet = UINT32_MAX), else UINT32_MAX */
+    /* the tetrahedron it comes from, or RT_HULL | the hull face (20 bytes a tuple, not 24 with
+     * two fields: the npm bunny's B* has 3.7e7 of them at the mixed complex's memory peak) */
+    uint32_t src;
 } rt_tuple;
+#define RT_HULL 0x80000000u
+#define TUPLE_TET(u) ((u)->src & RT_HULL ? UINT32_MAX : (u)->src)
+#define TUPLE_HULL(u) ((u)->src & RT_HULL ? (u)->src & ~RT_HULL : UINT32_MAX)
 
 static int cmp_tuple(const void *pa, const void *pb)
 {
@@ -375,8 +374,7 @@ static rt_tuple *rt_tuples(const fl_rt3 *rt, const double *xyzw, int positive_on
                 sort_small(u->v, k);
                 for (int i = k; i < 4; i++)
                     u->v[i] = UINT32_MAX;
-                u->tet = pass ? UINT32_MAX : (uint32_t)q;
-                u->hull = pass ? (uint32_t)q : UINT32_MAX;
+                u->src = pass ? RT_HULL | (uint32_t)q : (uint32_t)q;
                 if (positive_only && !has_positive_ball(xyzw, u->v)) m--;
             }
     }
@@ -400,9 +398,10 @@ static int simplex_link(fl_vec *link, const rt_tuple *tup, size_t i, size_t j,
 {
     size_t first = link->count;
     for (size_t q = i; q < j; q++) {
-        if (tup[q].tet == UINT32_MAX) continue; /* a hull face is a face of a tetrahedron too */
+        uint32_t tet = TUPLE_TET(tup + q);
+        if (tet == UINT32_MAX) continue; /* a hull face is a face of a tetrahedron too */
         for (int c = 0; c < 4; c++) {
-            uint32_t b = tets[4 * (size_t)tup[q].tet + (size_t)c];
+            uint32_t b = tets[4 * (size_t)tet + (size_t)c];
             int seen = b == tup[i].v[0] || b == tup[i].v[1] || b == tup[i].v[2] || b == tup[i].v[3];
             const uint32_t *have = (const uint32_t *)link->data;
             for (size_t l = first; l < link->count && !seen; l++)
@@ -428,8 +427,8 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
     double pts[MAXP][3], pad = 0, base[3];
     int np = 0;
     for (size_t q = i; q < j; q++) /* the finite vertices */
-        if (tup[q].tet != UINT32_MAX) {
-            const double *o = vor + 4 * (size_t)tup[q].tet;
+        if (TUPLE_TET(tup + q) != UINT32_MAX) {
+            const double *o = vor + 4 * (size_t)TUPLE_TET(tup + q);
             if (np == MAXP) return 1;
             pad = fmax(pad, o[3]);
             for (int c = 0; c < 3; c++)
@@ -440,8 +439,8 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
         base[c] = np ? pts[0][c] : xyzw[4 * (size_t)tup[i].v[0] + (size_t)c];
     double scale = 1 + fabs(base[0]) + fabs(base[1]) + fabs(base[2]);
     for (size_t q = i; q < j; q++) /* the rays: the normals of the hull faces around X */
-        if (tup[q].hull != UINT32_MAX) {
-            const uint32_t *f = rt->hull_faces + 3 * (size_t)tup[q].hull;
+        if (TUPLE_HULL(tup + q) != UINT32_MAX) {
+            const uint32_t *f = rt->hull_faces + 3 * (size_t)TUPLE_HULL(tup + q);
             const double *z0 = xyzw + 4 * (size_t)f[0], *z1 = xyzw + 4 * (size_t)f[1];
             const double *z2 = xyzw + 4 * (size_t)f[2];
             double u[3], w[3], n[3];
@@ -506,6 +505,14 @@ static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const
     if (st == FL_ERR_ALGORITHM)
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: %s", err ? err->message : "");
     if (st) return st;
+    /* the adjacency is not used here: 16 bytes a tetrahedron off the memory peak */
+    free(rt.adj);
+    rt.adj = NULL;
+    if (rt.tet_count >= RT_HULL || rt.hull_face_count >= RT_HULL) {
+        size_t tets = rt.tet_count;
+        fl_rt3_free(&rt);
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: too many tetrahedra (%zu)", tets);
+    }
     size_t m = 0;
     rt_tuple *tup = rt_tuples(&rt, xyzw, positive_only, &m);
     double *vor = fl_alloc_array(rt.tet_count + 1, 4 * sizeof(double));
@@ -533,7 +540,8 @@ static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const
         double nlo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, nhi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
         int bounded = 1, sliver = 0;
         for (j = i; j < m && !cmp_tuple(tup + i, tup + j); j++) {
-            const double *o = tup[j].tet == UINT32_MAX ? NULL : vor + 4 * (size_t)tup[j].tet;
+            uint32_t tet = TUPLE_TET(tup + j);
+            const double *o = tet == UINT32_MAX ? NULL : vor + 4 * (size_t)tet;
             if (!o || !(o[3] >= 0)) {
                 bounded = 0;
                 sliver |= o != NULL;

@@ -14,18 +14,18 @@
  * tetrahedron, k = dim) with what the skin needs in its mixed cell (derivation in
  * docs/skin.md, "The skin function"):
  *  - the coordinates mu_f of its focus f, the point of aff(X) with equal power to every ball of
- *    X, in X's frame (origin a = the first centre, edge vectors e_j = z_j - a), and the weight
- *    w of the ball (f, w) orthogonal to the balls of X (Cheng & Tan §6.2, b_X^perp);
+ *    X, in X's frame (origin a = the first centre, edge vectors e_j = z_j - a); the weight w of
+ *    the ball (f, w) orthogonal to the balls of X (Cheng & Tan §6.2, b_X^perp) follows
+ *    (skin_weight);
  *  - the inverse Gram matrix of the frame, to project onto aff(X).
- * The frame, the focus, the reach and the index box are recomputed from the balls when needed
+ * The frame, the focus, w, the reach and the index box are recomputed from the balls when needed
  * (skin_frame, skin_focus, skin_reach; skin_function.c for the box), with the same operations
  * that set mu_f up, so the values are those a stored copy would have: the record went from 360
- * to 176 bytes, which is what decides whether the mixed complex of B* of the npm bunny
+ * to 168 bytes, which is what decides whether the mixed complex of B* of the npm bunny
  * (~1.2e7 simplices with a positive ball) fits in 4 GB (docs/skin.md, "The bunny"). */
 typedef struct skin_simplex {
     double ginv[3][3];
     double mu_f[3];
-    double w;
     /* box_exact only: the box of X's power face nu_X (the Voronoi vertices around X with their
      * rounding pads). The walk requires v in it as well as the link tests: for a degenerate nu_X
      * (cospherical balls, as in B* of symmetric solids) the link half-spaces all pass through
@@ -70,6 +70,17 @@ static inline void skin_focus(const skin_simplex *s, const double a[3], const do
     for (int i = 0; i < s->k; i++)
         for (int c = 0; c < 3; c++)
             f[c] += s->mu_f[i] * e[i][c];
+}
+
+/* The weight w of the ball (f, w) orthogonal to the balls of s, from its frame origin a and
+ * focus f: |f - z_0|^2 - w_0 - w = 0. */
+static inline double skin_weight(const double *balls, const skin_simplex *s, const double a[3],
+                                 const double f[3])
+{
+    double fa2 = 0;
+    for (int c = 0; c < 3; c++)
+        fa2 += (f[c] - a[c]) * (f[c] - a[c]);
+    return fa2 - balls[4 * (size_t)s->ball[0] + 3];
 }
 
 /* The reach of s: sqrt(t * the largest weight of its balls), 0 when none is positive. The

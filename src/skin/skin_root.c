@@ -57,7 +57,7 @@ static void quadric_line(const fl_skin_function *sk, uint32_t id, const double a
     }
     c[0] = qq - kappa * pp;
     c[1] = 2 * (qq0 - kappa * pp0);
-    c[2] = q00 - kappa * p00 + sk->t * s->w;
+    c[2] = q00 - kappa * p00 + sk->t * skin_weight(sk->balls, s, sa, f);
 }
 
 static double poly(const double c[3], double s)

@@ -73,11 +73,12 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
                      uint32_t *next)
 {
     const skin_simplex *s = &sk->simplex[id];
-    double t = sk->t, d[3], et[3], mu[4], xi[3] = {0, 0, 0}, sum = 0;
+    double t = sk->t, a[3], e[3][3], f[3], d[3], et[3], mu[4], xi[3] = {0, 0, 0}, sum = 0;
+    skin_frame(sk->balls, s, a, e);
     for (int c = 0; c < 3; c++)
-        d[c] = x[c] - s->a[c];
+        d[c] = x[c] - a[c];
     for (int i = 0; i < s->k; i++)
-        et[i] = s->e[i][0] * d[0] + s->e[i][1] * d[1] + s->e[i][2] * d[2];
+        et[i] = e[i][0] * d[0] + e[i][1] * d[1] + e[i][2] * d[2];
     for (int i = 0; i < s->k; i++) {
         for (int j = 0; j < s->k; j++)
             xi[i] += s->ginv[i][j] * et[j];
@@ -99,14 +100,15 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         return *next == UINT32_MAX ? -1 : 0;
     }
     double proj[3], q[3], ut[3], q2 = 0, p2 = 0;
+    skin_focus(s, a, e, f);
     for (int c = 0; c < 3; c++) {
-        proj[c] = s->a[c];
+        proj[c] = a[c];
         for (int i = 0; i < s->k; i++)
-            proj[c] += xi[i] * s->e[i][c];
+            proj[c] += xi[i] * e[i][c];
         q[c] = x[c] - proj[c];
         q2 += q[c] * q[c];
-        p2 += (proj[c] - s->f[c]) * (proj[c] - s->f[c]);
-        ut[c] = t * (s->f[c] - s->a[c]) + q[c]; /* t (v - a), v = f + q/t in aff nu_X */
+        p2 += (proj[c] - f[c]) * (proj[c] - f[c]);
+        ut[c] = t * (f[c] - a[c]) + q[c]; /* t (v - a), v = f + q/t in aff nu_X */
     }
     /* v in nu_X: pi_b(v) - pi_X(v) = -2 (v - a).e_b + |e_b|^2 - w_b + w_a >= 0 for every link
      * ball b (e_b = z_b - a), times t so that small t does not amplify q/t */
@@ -115,9 +117,9 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
     uint32_t add = UINT32_MAX;
     for (size_t l = sk->link_start[id]; l < sk->link_start[id + 1]; l++) {
         const double *b = sk->balls + 4 * (size_t)sk->link[l];
-        double e[3] = {b[0] - b0[0], b[1] - b0[1], b[2] - b0[2]};
-        double e2 = e[0] * e[0] + e[1] * e[1] + e[2] * e[2], el = sqrt(e2);
-        double h = -2 * (ut[0] * e[0] + ut[1] * e[1] + ut[2] * e[2]) + t * (e2 - b[3] + b0[3]);
+        double eb[3] = {b[0] - b0[0], b[1] - b0[1], b[2] - b0[2]};
+        double e2 = eb[0] * eb[0] + eb[1] * eb[1] + eb[2] * eb[2], el = sqrt(e2);
+        double h = -2 * (ut[0] * eb[0] + ut[1] * eb[1] + ut[2] * eb[2]) + t * (e2 - b[3] + b0[3]);
         /* rounding of h: a few ulps of its terms' sizes (the weight difference is exact for
          * close weights); not of |w_b| + |w_a|, which for two nearly coincident balls of equal
          * weight (B* has mirror pairs 1e-17 apart) accepted points far outside the thin cell */
@@ -135,11 +137,11 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
     }
     if (s->shaky) return -1;
     for (int c = 0; s->box_exact && c < 3; c++) { /* t v = ut + t a within t box(nu_X) */
-        double tv = ut[c] + t * s->a[c];
+        double tv = ut[c] + t * a[c];
         double pad = SKIN_WALK_SLACK * (fabs(tv) + t * (fabs(s->nu_lo[c]) + fabs(s->nu_hi[c])));
         if (!(tv >= t * s->nu_lo[c] - pad && tv <= t * s->nu_hi[c] + pad)) return -1;
     }
-    *val = q2 - t / (1 - t) * p2 + t * s->w;
+    *val = q2 - t / (1 - t) * p2 + t * skin_weight(sk->balls, s, a, f);
     return 1;
 }
 

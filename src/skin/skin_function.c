@@ -73,25 +73,18 @@ static int invert_gram(int k, const double g[3][3], double inv[3][3])
 }
 
 /* Fills s for the balls idx[0..k] (k+1 balls). Returns -1 for affinely dependent centres. */
-static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, double t,
-                         skin_simplex *s)
+static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simplex *s)
 {
     const double *b0 = xyzw + 4 * (size_t)idx[0];
     memset(s, 0, sizeof *s);
-    s->k = k;
+    s->k = (uint8_t)k;
     for (int i = 0; i < 4; i++)
         s->ball[i] = i <= k ? idx[i] : UINT32_MAX;
-    for (int c = 0; c < 3; c++)
-        s->a[c] = b0[c];
-    double g[3][3], rhs[3];
-    for (int j = 0; j < k; j++) {
-        const double *bj = xyzw + 4 * (size_t)idx[j + 1];
-        for (int c = 0; c < 3; c++)
-            s->e[j][c] = bj[c] - b0[c];
-    }
+    double a[3], e[3][3], g[3][3], rhs[3];
+    skin_frame(xyzw, s, a, e);
     for (int i = 0; i < k; i++) {
         for (int j = 0; j < k; j++)
-            g[i][j] = s->e[i][0] * s->e[j][0] + s->e[i][1] * s->e[j][1] + s->e[i][2] * s->e[j][2];
+            g[i][j] = e[i][0] * e[j][0] + e[i][1] * e[j][1] + e[i][2] * e[j][2];
         /* equal power to ball 0 and ball i at f = a + E eta: G eta = (|e_i|^2 - w_i + w_0)/2 */
         rhs[i] = 0.5 * (g[i][i] - xyzw[4 * (size_t)idx[i + 1] + 3] + b0[3]);
     }
@@ -105,38 +98,25 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, double 
             imax = fmax(imax, fabs(s->ginv[i][j]));
         }
     s->shaky = !(k * gmax * imax <= 1e10);
-    for (int c = 0; c < 3; c++)
-        s->f[c] = s->a[c];
     for (int i = 0; i < k; i++) {
         double eta = 0;
         for (int j = 0; j < k; j++)
             eta += s->ginv[i][j] * rhs[j];
         s->mu_f[i] = eta;
-        for (int c = 0; c < 3; c++)
-            s->f[c] += eta * s->e[i][c];
     }
-    double fa2 = 0;
-    for (int c = 0; c < 3; c++)
-        fa2 += (s->f[c] - s->a[c]) * (s->f[c] - s->a[c]);
-    s->w = fa2 - b0[3]; /* the orthogonal ball: |f - z_0|^2 - w_0 - w = 0 */
-    double wx = 0;
-    for (int i = 0; i <= k; i++)
-        wx = fmax(wx, xyzw[4 * (size_t)idx[i] + 3]);
-    /* sqrt(t) sqrt(w), not sqrt(t w): t w underflows to 0 for a subnormal weight, which made
-     * listed() drop a positive ball's simplices (fuzz_skin: G = 40.8 at such a ball's centre) */
-    s->reach = sqrt(t) * sqrt(wx);
     return 0;
 }
 
 /* The mixed-cell quadric of s at x, or HUGE_VAL when the minimiser z* is not in s. */
-static double simplex_value(const skin_simplex *s, double t, const double *x)
+static double simplex_value(const fl_skin_function *sk, const skin_simplex *s, const double *x)
 {
-    double d[3], proj[3], xi[3] = {0, 0, 0};
+    double t = sk->t, a[3], e[3][3], f[3], d[3], proj[3], xi[3] = {0, 0, 0};
+    skin_frame(sk->balls, s, a, e);
     for (int c = 0; c < 3; c++)
-        d[c] = x[c] - s->a[c];
+        d[c] = x[c] - a[c];
     double et[3];
     for (int i = 0; i < s->k; i++)
-        et[i] = s->e[i][0] * d[0] + s->e[i][1] * d[1] + s->e[i][2] * d[2];
+        et[i] = e[i][0] * d[0] + e[i][1] * d[1] + e[i][2] * d[2];
     double sum = 0;
     for (int i = 0; i < s->k; i++) {
         for (int j = 0; j < s->k; j++)
@@ -147,16 +127,17 @@ static double simplex_value(const skin_simplex *s, double t, const double *x)
     }
     if (1 - sum < -SKIN_BARY_SLACK) return HUGE_VAL;
     for (int c = 0; c < 3; c++) {
-        proj[c] = s->a[c];
+        proj[c] = a[c];
         for (int i = 0; i < s->k; i++)
-            proj[c] += xi[i] * s->e[i][c];
+            proj[c] += xi[i] * e[i][c];
     }
+    skin_focus(s, a, e, f);
     double q2 = 0, p2 = 0;
     for (int c = 0; c < 3; c++) {
         q2 += (x[c] - proj[c]) * (x[c] - proj[c]);
-        p2 += (proj[c] - s->f[c]) * (proj[c] - s->f[c]);
+        p2 += (proj[c] - f[c]) * (proj[c] - f[c]);
     }
-    return q2 - t / (1 - t) * p2 + t * s->w;
+    return q2 - t / (1 - t) * p2 + t * skin_weight(sk->balls, s, a, f);
 }
 
 int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell)
@@ -180,7 +161,7 @@ double skin_value_scan(const fl_skin_function *skin, const double x[3])
     if (!skin_index_cell(skin, x, &cell)) return HUGE_VAL;
     double best = HUGE_VAL;
     for (size_t i = skin->cell_start[cell]; i < skin->cell_start[cell + 1]; i++) {
-        double v = simplex_value(&skin->simplex[skin->cell_item[i]], skin->t, x);
+        double v = simplex_value(skin, &skin->simplex[skin->cell_item[i]], x);
         if (v < best) best = v;
     }
     return best;
@@ -201,7 +182,7 @@ void fl_skin_function_free(fl_skin_function *skin)
 
 /* ---- candidate simplices ---- */
 
-static void simplex_box(const skin_simplex *s, double lo[3], double hi[3]);
+static void simplex_box(const double *balls, const skin_simplex *s, double lo[3], double hi[3]);
 static double dot3(const double *u, const double *v);
 static void cross3(const double *u, const double *v, double *w);
 
@@ -211,35 +192,45 @@ static void cross3(const double *u, const double *v, double *w);
  * (skin_mesh.c) needs values on the outside end of an edge to converge fast. */
 #define SKIN_REACH_MARGIN 1.5
 
-/* Adds the simplex of the balls idx[0..k] with its index box: the mixed cell's box
- * (1-t) box(X) + t box(nu_X) when nu_lo/nu_hi bound its power face, cut to the reach box; the
- * reach box alone when nu_lo is NULL. */
-static int add_simplex(fl_vec *v, const double *xyzw, const uint32_t *idx, int k, double t,
+/* The box where the index lists s: its mixed cell's box (1-t) box(X) + t box(nu_X) cut to the
+ * reach box when s->box_exact (nu_lo/nu_hi bound its power face), the reach box alone
+ * otherwise; empty on some axis (lo > hi) when the two do not meet. */
+static void reg_box(const double *balls, double t, const skin_simplex *s, double lo[3],
+                    double hi[3])
+{
+    double g = SKIN_REACH_MARGIN * skin_reach(balls, s, t);
+    simplex_box(balls, s, lo, hi);
+    for (int c = 0; c < 3; c++) {
+        double xlo = lo[c], xhi = hi[c];
+        lo[c] = xlo - g;
+        hi[c] = xhi + g;
+        if (!s->box_exact) continue;
+        /* the mixed cell is (1-t) X + t nu_X; the slack covers the rounding of this sum */
+        double mlo = (1 - t) * xlo + t * s->nu_lo[c], mhi = (1 - t) * xhi + t * s->nu_hi[c];
+        double slack = 1e-12 * (fabs(mlo) + fabs(mhi));
+        lo[c] = fmax(lo[c], mlo - slack);
+        hi[c] = fmin(hi[c], mhi + slack);
+    }
+}
+
+/* Adds the simplex of the balls idx[0..k], with the box of its power face when nu_lo/nu_hi
+ * bound it (NULL: unbounded or untrustworthy; the index then uses the reach box, reg_box). */
+static int add_simplex(fl_vec *v, const double *xyzw, const uint32_t *idx, int k,
                        const double *nu_lo, const double *nu_hi)
 {
     skin_simplex s;
-    if (simplex_setup(xyzw, idx, k, t, &s)) return 0; /* affinely dependent: never a minimiser */
-    double lo[3], hi[3], g = SKIN_REACH_MARGIN * s.reach;
-    simplex_box(&s, lo, hi);
+    if (simplex_setup(xyzw, idx, k, &s)) return 0; /* affinely dependent: never a minimiser */
     s.box_exact = nu_lo != NULL;
-    for (int c = 0; c < 3; c++) {
-        s.lo[c] = lo[c] - g;
-        s.hi[c] = hi[c] + g;
-        if (!nu_lo) continue;
-        /* the mixed cell is (1-t) X + t nu_X; the slack covers the rounding of this sum */
-        double mlo = (1 - t) * lo[c] + t * nu_lo[c], mhi = (1 - t) * hi[c] + t * nu_hi[c];
-        double slack = 1e-12 * (fabs(mlo) + fabs(mhi));
+    for (int c = 0; nu_lo && c < 3; c++) {
         s.nu_lo[c] = nu_lo[c];
         s.nu_hi[c] = nu_hi[c];
-        s.lo[c] = fmax(s.lo[c], mlo - slack);
-        s.hi[c] = fmin(s.hi[c], mhi + slack);
     }
     return fl_vec_push(v, &s, 1);
 }
 
 /* Few balls: every subset of at most 4 balls is a candidate (a superset of the regular
  * triangulation's simplices, so the minimum is still G; no triangulation, no degeneracy). */
-static int subsets(fl_vec *v, const double *xyzw, size_t n, double t)
+static int subsets(fl_vec *v, const double *xyzw, size_t n)
 {
     uint32_t idx[4];
     for (uint32_t mask = 1; mask < (1u << n); mask++) {
@@ -249,7 +240,7 @@ static int subsets(fl_vec *v, const double *xyzw, size_t n, double t)
                 if (k < 4) idx[k] = i;
                 k++;
             }
-        if (k <= 4 && add_simplex(v, xyzw, idx, k - 1, t, NULL, NULL)) return -1;
+        if (k <= 4 && add_simplex(v, xyzw, idx, k - 1, NULL, NULL)) return -1;
     }
     return 0;
 }
@@ -258,9 +249,13 @@ static int subsets(fl_vec *v, const double *xyzw, size_t n, double t)
  * face (tet = UINT32_MAX: its power face nu_X is unbounded). */
 typedef struct rt_tuple {
     uint32_t v[4]; /* sorted ball indices, UINT32_MAX padding */
-    uint32_t tet;
-    uint32_t hull; /* the hull face it comes from (tet = UINT32_MAX), else UINT32_MAX */
+    /* the tetrahedron it comes from, or RT_HULL | the hull face (20 bytes a tuple, not 24 with
+     * two fields: the npm bunny's B* has 3.7e7 of them at the mixed complex's memory peak) */
+    uint32_t src;
 } rt_tuple;
+#define RT_HULL 0x80000000u
+#define TUPLE_TET(u) ((u)->src & RT_HULL ? UINT32_MAX : (u)->src)
+#define TUPLE_HULL(u) ((u)->src & RT_HULL ? (u)->src & ~RT_HULL : UINT32_MAX)
 
 static int cmp_tuple(const void *pa, const void *pb)
 {
@@ -379,8 +374,7 @@ static rt_tuple *rt_tuples(const fl_rt3 *rt, const double *xyzw, int positive_on
                 sort_small(u->v, k);
                 for (int i = k; i < 4; i++)
                     u->v[i] = UINT32_MAX;
-                u->tet = pass ? UINT32_MAX : (uint32_t)q;
-                u->hull = pass ? (uint32_t)q : UINT32_MAX;
+                u->src = pass ? RT_HULL | (uint32_t)q : (uint32_t)q;
                 if (positive_only && !has_positive_ball(xyzw, u->v)) m--;
             }
     }
@@ -404,9 +398,10 @@ static int simplex_link(fl_vec *link, const rt_tuple *tup, size_t i, size_t j,
 {
     size_t first = link->count;
     for (size_t q = i; q < j; q++) {
-        if (tup[q].tet == UINT32_MAX) continue; /* a hull face is a face of a tetrahedron too */
+        uint32_t tet = TUPLE_TET(tup + q);
+        if (tet == UINT32_MAX) continue; /* a hull face is a face of a tetrahedron too */
         for (int c = 0; c < 4; c++) {
-            uint32_t b = tets[4 * (size_t)tup[q].tet + (size_t)c];
+            uint32_t b = tets[4 * (size_t)tet + (size_t)c];
             int seen = b == tup[i].v[0] || b == tup[i].v[1] || b == tup[i].v[2] || b == tup[i].v[3];
             const uint32_t *have = (const uint32_t *)link->data;
             for (size_t l = first; l < link->count && !seen; l++)
@@ -432,8 +427,8 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
     double pts[MAXP][3], pad = 0, base[3];
     int np = 0;
     for (size_t q = i; q < j; q++) /* the finite vertices */
-        if (tup[q].tet != UINT32_MAX) {
-            const double *o = vor + 4 * (size_t)tup[q].tet;
+        if (TUPLE_TET(tup + q) != UINT32_MAX) {
+            const double *o = vor + 4 * (size_t)TUPLE_TET(tup + q);
             if (np == MAXP) return 1;
             pad = fmax(pad, o[3]);
             for (int c = 0; c < 3; c++)
@@ -444,8 +439,8 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
         base[c] = np ? pts[0][c] : xyzw[4 * (size_t)tup[i].v[0] + (size_t)c];
     double scale = 1 + fabs(base[0]) + fabs(base[1]) + fabs(base[2]);
     for (size_t q = i; q < j; q++) /* the rays: the normals of the hull faces around X */
-        if (tup[q].hull != UINT32_MAX) {
-            const uint32_t *f = rt->hull_faces + 3 * (size_t)tup[q].hull;
+        if (TUPLE_HULL(tup + q) != UINT32_MAX) {
+            const uint32_t *f = rt->hull_faces + 3 * (size_t)TUPLE_HULL(tup + q);
             const double *z0 = xyzw + 4 * (size_t)f[0], *z1 = xyzw + 4 * (size_t)f[1];
             const double *z2 = xyzw + 4 * (size_t)f[2];
             double u[3], w[3], n[3];
@@ -503,13 +498,21 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
  * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
  * ball spans many simplices. */
 static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const double *xyzw,
-                              size_t n, double t, int positive_only, fl_error *err)
+                              size_t n, int positive_only, fl_error *err)
 {
     fl_rt3 rt;
     fl_status st = fl_rt3_build(xyzw, n, NULL, &rt, err);
     if (st == FL_ERR_ALGORITHM)
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: %s", err ? err->message : "");
     if (st) return st;
+    /* the adjacency is not used here: 16 bytes a tetrahedron off the memory peak */
+    free(rt.adj);
+    rt.adj = NULL;
+    if (rt.tet_count >= RT_HULL || rt.hull_face_count >= RT_HULL) {
+        size_t tets = rt.tet_count;
+        fl_rt3_free(&rt);
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: too many tetrahedra (%zu)", tets);
+    }
     size_t m = 0;
     rt_tuple *tup = rt_tuples(&rt, xyzw, positive_only, &m);
     double *vor = fl_alloc_array(rt.tet_count + 1, 4 * sizeof(double));
@@ -537,7 +540,8 @@ static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const
         double nlo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, nhi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
         int bounded = 1, sliver = 0;
         for (j = i; j < m && !cmp_tuple(tup + i, tup + j); j++) {
-            const double *o = tup[j].tet == UINT32_MAX ? NULL : vor + 4 * (size_t)tup[j].tet;
+            uint32_t tet = TUPLE_TET(tup + j);
+            const double *o = tet == UINT32_MAX ? NULL : vor + 4 * (size_t)tet;
             if (!o || !(o[3] >= 0)) {
                 bounded = 0;
                 sliver |= o != NULL;
@@ -552,7 +556,7 @@ static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const
         while (k < 4 && tup[i].v[k] != UINT32_MAX)
             k++;
         size_t before = v->count;
-        if (add_simplex(v, xyzw, tup[i].v, k - 1, t, bounded ? nlo : NULL, nhi)) goto nomem;
+        if (add_simplex(v, xyzw, tup[i].v, k - 1, bounded ? nlo : NULL, nhi)) goto nomem;
         if (v->count == before) continue; /* dropped (affinely dependent): no link either */
         ((skin_simplex *)v->data)[before].shaky |=
             sliver || (k - 1 < 3 && nu_degenerate(tup, i, j, vor, &rt, xyzw, 4 - k));
@@ -572,25 +576,27 @@ nomem:
 
 /* ---- the grid index ---- */
 
-static void simplex_box(const skin_simplex *s, double lo[3], double hi[3])
+static void simplex_box(const double *balls, const skin_simplex *s, double lo[3], double hi[3])
 {
+    double a[3], e[3][3];
+    skin_frame(balls, s, a, e);
     for (int c = 0; c < 3; c++)
-        lo[c] = hi[c] = s->a[c];
+        lo[c] = hi[c] = a[c];
     for (int j = 0; j < s->k; j++)
         for (int c = 0; c < 3; c++) {
-            double u = s->a[c] + s->e[j][c];
+            double u = a[c] + e[j][c];
             if (u < lo[c]) lo[c] = u;
             if (u > hi[c]) hi[c] = u;
         }
 }
 
-/* Cells of the index met by s's registration box: [c0, c1] per axis. */
-static void simplex_cells(const fl_skin_function *sk, const skin_simplex *s, size_t c0[3],
-                          size_t c1[3])
+/* Cells of the index met by the registration box (lo, hi): [c0, c1] per axis. */
+static void simplex_cells(const fl_skin_function *sk, const double lo[3], const double hi[3],
+                          size_t c0[3], size_t c1[3])
 {
     for (int c = 0; c < 3; c++) {
-        double u0 = floor((s->lo[c] - sk->origin[c]) / sk->cell);
-        double u1 = floor((s->hi[c] - sk->origin[c]) / sk->cell);
+        double u0 = floor((lo[c] - sk->origin[c]) / sk->cell);
+        double u1 = floor((hi[c] - sk->origin[c]) / sk->cell);
         c0[c] = u0 < 0 ? 0 : (size_t)u0;
         c1[c] = u1 >= (double)sk->dims[c] ? sk->dims[c] - 1 : (size_t)u1;
     }
@@ -612,24 +618,25 @@ static void cross3(const double *u, const double *v, double *w)
  * point within d of the simplex is within d outside each facet's plane (and within d of the
  * plane or line of a triangle or edge). Keeps long simplices out of the index cells they only
  * pass far from. */
-static int may_be_near(const skin_simplex *s, const double c[3], double d)
+static int may_be_near(const double *balls, const skin_simplex *s, const double c[3], double d)
 {
-    double p[4][3], v[3];
+    double p[4][3], v[3], sa[3], se[3][3];
+    skin_frame(balls, s, sa, se);
     for (int i = 0; i <= s->k; i++)
         for (int j = 0; j < 3; j++)
-            p[i][j] = s->a[j] + (i ? s->e[i - 1][j] : 0);
+            p[i][j] = sa[j] + (i ? se[i - 1][j] : 0);
     for (int j = 0; j < 3; j++)
-        v[j] = c[j] - s->a[j];
+        v[j] = c[j] - sa[j];
     if (s->k == 0) return 1;
     if (s->k == 1) {
-        double len = sqrt(dot3(s->e[0], s->e[0])), along = dot3(v, s->e[0]) / len;
+        double len = sqrt(dot3(se[0], se[0])), along = dot3(v, se[0]) / len;
         if (along < -d || along > len + d) return 0;
         return dot3(v, v) - along * along <= d * d;
     }
     static const int face[4][4] = {{1, 2, 3, 0}, {0, 2, 3, 1}, {0, 1, 3, 2}, {0, 1, 2, 3}};
     double n[3];
     if (s->k == 2) {
-        cross3(s->e[0], s->e[1], n);
+        cross3(se[0], se[1], n);
         double nl = sqrt(dot3(n, n));
         if (fabs(dot3(n, v)) > d * nl) return 0;
         for (int i = 0; i < 3; i++) { /* edge p[i] p[(i+1)%3], outward in the plane */
@@ -671,11 +678,14 @@ static void cell_centre(const fl_skin_function *sk, size_t x, size_t y, size_t z
     c[2] = sk->origin[2] + ((double)z + 0.5) * sk->cell;
 }
 
-/* Whether the index lists s at all: simplices without a positive ball are never the minimiser
- * of a negative G, and a mixed cell beyond the reach of its simplex only holds G >= 0. */
-static int listed(const skin_simplex *s)
+/* Whether the index lists s at all, with its registration box (reg_box): simplices without a
+ * positive ball are never the minimiser of a negative G, and a mixed cell beyond the reach of
+ * its simplex only holds G >= 0. */
+static int listed(const fl_skin_function *sk, const skin_simplex *s, double lo[3], double hi[3])
 {
-    return s->reach > 0 && s->lo[0] <= s->hi[0] && s->lo[1] <= s->hi[1] && s->lo[2] <= s->hi[2];
+    if (!(skin_reach(sk->balls, s, sk->t) > 0)) return 0;
+    reg_box(sk->balls, sk->t, s, lo, hi);
+    return lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2];
 }
 
 /* Registers simplex i in every cell near it (pass 0 counts into cell_start[id + 1], pass 1
@@ -683,21 +693,23 @@ static int listed(const skin_simplex *s)
 static double register_simplex(fl_skin_function *sk, size_t i, int pass)
 {
     size_t c0[3], c1[3];
+    double lo[3], hi[3];
     const skin_simplex *s = &sk->simplex[i];
-    if (!listed(s)) return 0;
-    simplex_cells(sk, s, c0, c1);
+    if (!listed(sk, s, lo, hi)) return 0;
+    simplex_cells(sk, lo, hi, c0, c1);
     if (pass == 2) /* the budget estimate: the box's cells, an upper bound, without the tests */
         return (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
                (double)(c1[2] - c0[2] + 1);
     /* a cell holds a point within the reach iff its centre is within reach + half diagonal */
-    double d = (SKIN_REACH_MARGIN * s->reach + 0.8660254037844387 * sk->cell) * (1 + 1e-9);
+    double reach = skin_reach(sk->balls, s, sk->t);
+    double d = (SKIN_REACH_MARGIN * reach + 0.8660254037844387 * sk->cell) * (1 + 1e-9);
     double count = 0;
     for (size_t z = c0[2]; z <= c1[2]; z++)
         for (size_t y = c0[1]; y <= c1[1]; y++)
             for (size_t x = c0[0]; x <= c1[0]; x++) {
                 double c[3];
                 cell_centre(sk, x, y, z, c);
-                if (!s->box_exact && !may_be_near(s, c, d)) continue;
+                if (!s->box_exact && !may_be_near(sk->balls, s, c, d)) continue;
                 count++;
                 size_t id = (z * sk->dims[1] + y) * sk->dims[0] + x;
                 if (pass == 0)
@@ -727,13 +739,13 @@ static fl_status index_box(const fl_skin_function *sk, double lo[3], double hi[3
         hi[c] = -HUGE_VAL;
     }
     for (size_t i = 0; i < sk->simplex_count; i++) {
-        const skin_simplex *s = &sk->simplex[i];
-        if (!listed(s)) continue;
+        double slo[3], shi[3];
+        if (!listed(sk, &sk->simplex[i], slo, shi)) continue;
         double side = 0;
         for (int c = 0; c < 3; c++) {
-            lo[c] = fmin(lo[c], s->lo[c]);
-            hi[c] = fmax(hi[c], s->hi[c]);
-            side = fmax(side, s->hi[c] - s->lo[c]);
+            lo[c] = fmin(lo[c], slo[c]);
+            hi[c] = fmax(hi[c], shi[c]);
+            side = fmax(side, shi[c] - slo[c]);
         }
         r[m++] = side;
     }
@@ -839,27 +851,26 @@ static fl_status function_new(const double *xyzw, size_t n, double t, int positi
     fl_vec_init(&link, sizeof(uint32_t));
     fl_vec_init(&link_start, sizeof(size_t));
     fl_status st = FL_OK;
-    if (n <= 8) {
-        if (subsets(&v, xyzw, n, t)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    /* the simplices' frames are read from the balls (skin_frame), the walk reads the balls of
+     * the link; one word of shared hint (skin_cell.c) */
+    sk->balls = fl_alloc_array(4 * n, sizeof(double));
+    sk->hint = calloc(1, sizeof *sk->hint);
+    if (!sk->balls || !sk->hint) {
+        st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     } else {
-        st = rt_simplices(&v, &link, &link_start, xyzw, n, t, positive_only, err);
+        memcpy(sk->balls, xyzw, 4 * n * sizeof(double));
+        atomic_init(sk->hint, 0);
+    }
+    if (!st && n <= 8) {
+        if (subsets(&v, xyzw, n)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    } else if (!st) {
+        st = rt_simplices(&v, &link, &link_start, xyzw, n, positive_only, err);
         sk->walkable = !st;
     }
     sk->simplex_count = v.count;
     sk->simplex = fl_vec_release(&v);
     sk->link = fl_vec_release(&link);
     sk->link_start = fl_vec_release(&link_start);
-    if (!st && sk->walkable) {
-        /* the walk reads the balls of the link; one word of shared hint (skin_cell.c) */
-        sk->balls = fl_alloc_array(4 * n, sizeof(double));
-        sk->hint = calloc(1, sizeof *sk->hint);
-        if (!sk->balls || !sk->hint) {
-            st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
-        } else {
-            memcpy(sk->balls, xyzw, 4 * n * sizeof(double));
-            atomic_init(sk->hint, 0);
-        }
-    }
     if (!st) st = build_index(sk, err);
     if (st) {
         fl_skin_function_free(sk);

@@ -162,9 +162,12 @@ static fl_status make_sources(const fl_skin_function *g, const double *xyzw, siz
     double floor_h = hmin / 16, mt = fmin(t, 1 - t);
     for (size_t i = 0; i < g->simplex_count; i++) {
         const skin_simplex *x = &g->simplex[i];
-        if (x->k == 0 || !(x->reach > 0) || !focus_inside(x)) continue;
-        double a = fabs(x->w);
-        size_src s = {{x->f[0], x->f[1], x->f[2]}, sqrt(a), grade * sqrt(mt * a)};
+        if (x->k == 0 || !(skin_reach(g->balls, x, g->t) > 0) || !focus_inside(x)) continue;
+        double za[3], ze[3][3], f[3];
+        skin_frame(g->balls, x, za, ze);
+        skin_focus(x, za, ze, f);
+        double a = fabs(skin_weight(g->balls, x, za, f));
+        size_src s = {{f[0], f[1], f[2]}, sqrt(a), grade * sqrt(mt * a)};
         s.h = fmin(hmax, fmax(s.h, floor_h));
         if (!isfinite(s.h) || !isfinite(s.r)) continue;
         if (fl_vec_push(src, &s, 1))

@@ -3,6 +3,7 @@
 #ifndef FL_SKIN_INTERNAL_H
 #define FL_SKIN_INTERNAL_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -12,41 +13,89 @@
 /* One simplex X of the regular triangulation of the balls (a vertex, edge, triangle or
  * tetrahedron, k = dim) with what the skin needs in its mixed cell (derivation in
  * docs/skin.md, "The skin function"):
- *  - its focus f, the point of aff(X) with equal power to every ball of X, and the weight w of
- *    the ball (f, w) orthogonal to the balls of X (Cheng & Tan §6.2, b_X^perp);
- *  - a frame to project onto aff(X): origin a (first centre), edge vectors e_j = z_j - a and
- *    the inverse Gram matrix, plus the coordinates mu_f of f in that frame. */
+ *  - the coordinates mu_f of its focus f, the point of aff(X) with equal power to every ball of
+ *    X, in X's frame (origin a = the first centre, edge vectors e_j = z_j - a); the weight w of
+ *    the ball (f, w) orthogonal to the balls of X (Cheng & Tan §6.2, b_X^perp) follows
+ *    (skin_weight);
+ *  - the inverse Gram matrix of the frame, to project onto aff(X).
+ * The frame, the focus, w, the reach and the index box are recomputed from the balls when needed
+ * (skin_frame, skin_focus, skin_reach; skin_function.c for the box), with the same operations
+ * that set mu_f up, so the values are those a stored copy would have: the record went from 360
+ * to 168 bytes, which is what decides whether the mixed complex of B* of the npm bunny
+ * (~1.2e7 simplices with a positive ball) fits in 4 GB (docs/skin.md, "The bunny"). */
 typedef struct skin_simplex {
-    int k;
-    double a[3];
-    double e[3][3];
     double ginv[3][3];
     double mu_f[3];
-    double f[3];
-    double w;
-    /* sqrt(t * max weight of X's balls), 0 when no ball of X has a positive weight: the
-     * combination weight is at most that on X, so G(x) < 0 with X the minimiser puts x within
-     * this distance of X (skin_function.c) */
-    double reach;
-    /* Where the index lists X (skin_function.c, build_index): the box of X's mixed cell
-     * (1-t) X + t nu_X when box_exact, else X's box grown by SKIN_REACH_MARGIN times the reach
-     * (hull simplices, whose power face nu_X is unbounded, faces of slivers whose Voronoi
-     * vertex is not trustworthy, and the subsets of few balls) with a finer nearness test. */
-    double lo[3], hi[3];
-    int box_exact;
-    /* The balls of X, sorted, UINT32_MAX padding (the key the mixed-cell walk looks faces and
-     * cofaces up by; skin_cell.c). */
-    uint32_t ball[4];
-    /* 1 when the walk must not trust X's membership test: X is a face of a sliver whose
-     * Voronoi vertex is decided by rounding, or its Gram matrix is ill-conditioned (its
-     * barycentric coordinates are noise); a walk ending in X falls back to the scan. */
-    int shaky;
     /* box_exact only: the box of X's power face nu_X (the Voronoi vertices around X with their
      * rounding pads). The walk requires v in it as well as the link tests: for a degenerate nu_X
      * (cospherical balls, as in B* of symmetric solids) the link half-spaces all pass through
-     * one point and bound a wedge, not the face. */
+     * one point and bound a wedge, not the face. It also bounds where the index lists X: the
+     * box of X's mixed cell (1-t) X + t nu_X when box_exact, else X's box grown by
+     * SKIN_REACH_MARGIN times the reach (hull simplices, whose power face nu_X is unbounded,
+     * faces of slivers whose Voronoi vertex is not trustworthy, and the subsets of few balls)
+     * with a finer nearness test (skin_function.c). */
     double nu_lo[3], nu_hi[3];
+    /* The balls of X, sorted, UINT32_MAX padding (the key the mixed-cell walk looks faces and
+     * cofaces up by; skin_cell.c). */
+    uint32_t ball[4];
+    uint8_t k;
+    uint8_t box_exact;
+    /* 1 when the walk must not trust X's membership test: X is a face of a sliver whose
+     * Voronoi vertex is decided by rounding, or its Gram matrix is ill-conditioned (its
+     * barycentric coordinates are noise); a walk ending in X falls back to the scan. */
+    uint8_t shaky;
 } skin_simplex;
+
+/* The frame of s from the balls (x, y, z, w each): a = the centre of its first ball and
+ * e_j = z_j - a, j < k (rows k.. are zero). */
+static inline void skin_frame(const double *balls, const skin_simplex *s, double a[3],
+                              double e[3][3])
+{
+    const double *b0 = balls + 4 * (size_t)s->ball[0];
+    for (int c = 0; c < 3; c++)
+        a[c] = b0[c];
+    for (int j = 0; j < 3; j++) {
+        const double *bj = j < s->k ? balls + 4 * (size_t)s->ball[j + 1] : b0;
+        for (int c = 0; c < 3; c++)
+            e[j][c] = bj[c] - b0[c];
+    }
+}
+
+/* The focus f = a + sum_j mu_f[j] e_j of s in its frame (a, e). */
+static inline void skin_focus(const skin_simplex *s, const double a[3], const double e[3][3],
+                              double f[3])
+{
+    for (int c = 0; c < 3; c++)
+        f[c] = a[c];
+    for (int i = 0; i < s->k; i++)
+        for (int c = 0; c < 3; c++)
+            f[c] += s->mu_f[i] * e[i][c];
+}
+
+/* The weight w of the ball (f, w) orthogonal to the balls of s, from its frame origin a and
+ * focus f: |f - z_0|^2 - w_0 - w = 0. */
+static inline double skin_weight(const double *balls, const skin_simplex *s, const double a[3],
+                                 const double f[3])
+{
+    double fa2 = 0;
+    for (int c = 0; c < 3; c++)
+        fa2 += (f[c] - a[c]) * (f[c] - a[c]);
+    return fa2 - balls[4 * (size_t)s->ball[0] + 3];
+}
+
+/* The reach of s: sqrt(t * the largest weight of its balls), 0 when none is positive. The
+ * combination weight is at most that on X, so G(x) < 0 with X the minimiser puts x within this
+ * distance of X (skin_function.c). sqrt(t) sqrt(w), not sqrt(t w): t w underflows to 0 for a
+ * subnormal weight, which dropped such a ball's simplices from the index (fuzz_skin). */
+static inline double skin_reach(const double *balls, const skin_simplex *s, double t)
+{
+    double wx = 0;
+    for (int i = 0; i <= s->k; i++) {
+        double w = balls[4 * (size_t)s->ball[i] + 3];
+        wx = w > wx ? w : wx;
+    }
+    return sqrt(t) * sqrt(wx);
+}
 
 struct fl_skin_function {
     double t;
@@ -65,7 +114,7 @@ struct fl_skin_function {
      * is a copy of the input, and *hint the simplex of the previous evaluation (relaxed atomic:
      * any value is a correct start, so concurrent callers only lose speed). */
     int walkable;
-    double *balls;
+    double *balls; /* a copy of the input (every path: the simplices' frames are read from it) */
     size_t *link_start;
     uint32_t *link;
     _Atomic uint32_t *hint;

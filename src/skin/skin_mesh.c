@@ -430,8 +430,13 @@ static double default_cell(const fl_skin_function *g, double t, double rmin)
     double h = 0.25 * sqrt(t) * rmin, floor_h = 0.25 * h;
     for (size_t i = 0; i < g->simplex_count; i++) {
         const skin_simplex *s = &g->simplex[i];
-        if (s->k != 1 || !(s->w < 0) || s->mu_f[0] < 0 || s->mu_f[0] > 1) continue;
-        double waist = sqrt(-t * s->w);
+        if (s->k != 1 || s->mu_f[0] < 0 || s->mu_f[0] > 1) continue;
+        double a[3], e[3][3], f[3];
+        skin_frame(g->balls, s, a, e);
+        skin_focus(s, a, e, f);
+        double w = skin_weight(g->balls, s, a, f);
+        if (!(w < 0)) continue;
+        double waist = sqrt(-t * w);
         if (waist < h) h = fmax(waist, floor_h);
     }
     return h;

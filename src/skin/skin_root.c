@@ -20,11 +20,14 @@ static void quadric_line(const fl_skin_function *sk, uint32_t id, const double a
 {
     const skin_simplex *s = &sk->simplex[id];
     double kappa = sk->t / (1 - sk->t), r[3], ea[3], ed[3], xa[3] = {0, 0, 0}, xd[3] = {0, 0, 0};
+    double sa[3], e[3][3], f[3];
+    skin_frame(sk->balls, s, sa, e);
+    skin_focus(s, sa, e, f);
     for (int k = 0; k < 3; k++)
-        r[k] = a[k] - s->a[k];
+        r[k] = a[k] - sa[k];
     for (int i = 0; i < s->k; i++) {
-        ea[i] = s->e[i][0] * r[0] + s->e[i][1] * r[1] + s->e[i][2] * r[2];
-        ed[i] = s->e[i][0] * d[0] + s->e[i][1] * d[1] + s->e[i][2] * d[2];
+        ea[i] = e[i][0] * r[0] + e[i][1] * r[1] + e[i][2] * r[2];
+        ed[i] = e[i][0] * d[0] + e[i][1] * d[1] + e[i][2] * d[2];
     }
     for (int i = 0; i < s->k; i++)
         for (int j = 0; j < s->k; j++) {
@@ -35,10 +38,10 @@ static void quadric_line(const fl_skin_function *sk, uint32_t id, const double a
     for (int k = 0; k < 3; k++) {
         double ra = 0, rd = 0; /* the projections onto aff X, relative to its first centre */
         for (int i = 0; i < s->k; i++) {
-            ra += xa[i] * s->e[i][k];
-            rd += xd[i] * s->e[i][k];
+            ra += xa[i] * e[i][k];
+            rd += xd[i] * e[i][k];
         }
-        p0[k] = s->a[k] + ra - s->f[k];
+        p0[k] = sa[k] + ra - f[k];
         pd[k] = rd;
         q0[k] = r[k] - ra;
         qd[k] = d[k] - rd;
@@ -54,7 +57,7 @@ static void quadric_line(const fl_skin_function *sk, uint32_t id, const double a
     }
     c[0] = qq - kappa * pp;
     c[1] = 2 * (qq0 - kappa * pp0);
-    c[2] = q00 - kappa * p00 + sk->t * s->w;
+    c[2] = q00 - kappa * p00 + sk->t * skin_weight(sk->balls, s, sa, f);
 }
 
 static double poly(const double c[3], double s)

@@ -8,6 +8,10 @@
  *    holds them all;
  *  - its value has the sign of the definition (skin_oracle.h: min over subsets of <= 4 balls,
  *    long double) everywhere, equals it where it is <= 0 and is never below it;
+ *  - its record is at most 168 bytes (the frame, focus, orthogonal weight, reach and index box
+ *    are recomputed from the balls; 360 bytes before, 4.4 GB for the bunny's 1.2e7 simplices),
+ *    and the recomputed focus f and weight w are X's orthogonal ball: f in aff(X) and
+ *    |f - z_i|^2 - w_i = w for every ball of X (checked in long double);
  *  - fl_skin_mesh (which uses it) gives a closed, manifold mesh with the Euler characteristic
  *    2 chi(union of the balls) (alpha-complex oracle) and vertices on the skin by the
  *    definition. */
@@ -114,6 +118,49 @@ static void test_only_positive_simplices_same_sign(void)
     }
 }
 
+static void test_lean_record_orthogonal_ball(void)
+{
+    enum { NP = 7, NN = 14 };
+    static double b[4 * (NP + NN)];
+    const int n = NP + NN;
+    CHECK_MSG(sizeof(skin_simplex) <= 168, "skin_simplex is %zu bytes", sizeof(skin_simplex));
+    bstar_like(b, NP, NN);
+    fl_skin_function *g = NULL;
+    fl_error err;
+    CHECK_STATUS(skin_function_new_mesher(b, (size_t)n, 0.5, &g, &err), FL_OK, &err);
+    if (!g) return;
+    size_t bad = 0;
+    for (size_t i = 0; i < g->simplex_count; i++) {
+        const skin_simplex *s = &g->simplex[i];
+        double a[3], e[3][3], f[3];
+        skin_frame(g->balls, s, a, e);
+        skin_focus(s, a, e, f);
+        long double w = skin_weight(g->balls, s, a, f), scale = 1 + fabsl(w);
+        for (int j = 0; j <= s->k; j++) { /* orthogonal to every ball of X */
+            const double *z = b + 4 * (size_t)s->ball[j];
+            long double d2 = 0;
+            for (int c = 0; c < 3; c++)
+                d2 += ((long double)f[c] - z[c]) * ((long double)f[c] - z[c]);
+            scale += d2 + fabs(z[3]);
+            if (fabsl(d2 - z[3] - w) > 1e-9L * scale) bad++;
+        }
+        long double off = 0, n0 = e[0][1] * e[1][2] - e[0][2] * e[1][1];
+        long double n1 = e[0][2] * e[1][0] - e[0][0] * e[1][2];
+        long double n2 = e[0][0] * e[1][1] - e[0][1] * e[1][0];
+        long double u[3] = {f[0] - a[0], f[1] - a[1], f[2] - a[2]};
+        if (s->k == 0) off = fabsl(u[0]) + fabsl(u[1]) + fabsl(u[2]);
+        if (s->k == 1) /* |u x e_0| */
+            off = fabsl(u[1] * e[0][2] - u[2] * e[0][1]) + fabsl(u[2] * e[0][0] - u[0] * e[0][2]) +
+                  fabsl(u[0] * e[0][1] - u[1] * e[0][0]);
+        if (s->k == 2) off = fabsl(u[0] * n0 + u[1] * n1 + u[2] * n2);
+        if (off > 1e-9L * scale * scale) bad++;
+    }
+    CHECK_MSG(bad == 0, "%zu of %zu simplices: recomputed focus/weight not the orthogonal ball",
+              bad, g->simplex_count);
+    CHECK(g->simplex_count > 0);
+    fl_skin_function_free(g);
+}
+
 static void test_mesh_of_bstar_like_set(void)
 {
     enum { NP = 8, NN = 14 };
@@ -149,6 +196,7 @@ int main(void)
 {
     static const fl_test_case cases[] = {
         FL_TEST_CASE(test_only_positive_simplices_same_sign),
+        FL_TEST_CASE(test_lean_record_orthogonal_ball),
         FL_TEST_CASE(test_mesh_of_bstar_like_set),
     };
     return fl_test_run(cases, sizeof cases / sizeof cases[0]);

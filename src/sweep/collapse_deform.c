@@ -92,12 +92,10 @@ fl_status fl_sweep_collapse_update_vertices(fl_sweep_collapse *hierarchy, const 
                        "%zu vertices given, the hierarchy was built with %zu", vertex_count,
                        h->vertex_count);
     double scale = h->scale;
-    for (size_t i = 0; i < 3 * h->vertex_count; i++) {
-        if (!fl_sweep_coord_ok(xyz[i]))
-            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
-                           "vertex %zu has a coordinate that is not finite or beyond 1e150", i / 3);
-        scale = fmax(scale, fabs(xyz[i]));
-    }
+    size_t bad = fl_sweep_coords_scale(xyz, 3 * h->vertex_count, &scale);
+    if (bad < 3 * h->vertex_count)
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1,
+                       "vertex %zu has a coordinate that is not finite or beyond 1e150", bad / 3);
     double *g = fl_alloc_array(h->vertex_count ? h->vertex_count : 1, sizeof *g);
     if (!g || keep_reference(h)) {
         free(g);

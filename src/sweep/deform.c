@@ -318,12 +318,10 @@ fl_status fl_sweep_update_vertices(fl_sweep *sweep, const double *xyz, fl_error 
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "only a mesh hierarchy (fl_sweep_build) can move its vertices");
     double scale = sweep->scale;
-    for (size_t i = 0; i < 3 * sweep->vertex_count; i++) {
-        if (!fl_sweep_coord_ok(xyz[i]))
-            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
-                           "vertex %zu is not finite or beyond 1e150", i / 3);
-        scale = fmax(scale, fabs(xyz[i]));
-    }
+    size_t bad = fl_sweep_coords_scale(xyz, 3 * sweep->vertex_count, &scale);
+    if (bad < 3 * sweep->vertex_count)
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "vertex %zu is not finite or beyond 1e150",
+                       bad / 3);
     node_motion *m = fl_alloc_array(sweep->node_count, sizeof *m);
     if (!m) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a hierarchy update");
     /* The coordinates only grow the rounding slack: keep the larger scale. */

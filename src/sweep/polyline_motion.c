@@ -113,13 +113,10 @@ fl_status fl_sweep_polyline_update(fl_sweep *sweep, const double *points, fl_err
                        "use fl_sweep_update_vertices for a mesh");
     size_t count = sweep->vertex_count * (size_t)sweep->dim;
     double scale = sweep->scale;
-    for (size_t i = 0; i < count; i++) {
-        if (!fl_sweep_coord_ok(points[i]))
-            return fl_fail(err, FL_ERR_INPUT, NULL, -1,
-                           "polyline point %zu is not finite or beyond 1e150",
-                           i / (size_t)sweep->dim);
-        scale = fmax(scale, fabs(points[i]));
-    }
+    size_t bad = fl_sweep_coords_scale(points, count, &scale);
+    if (bad < count)
+        return fl_fail(err, FL_ERR_INPUT, NULL, -1, "polyline point %zu is not finite or beyond 1e150",
+                       bad / (size_t)sweep->dim);
     chain_motion *m = fl_alloc_array(sweep->node_count, sizeof *m);
     if (!m) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory for a polyline update");
     sweep->scale = scale; /* only grows the rounding slack */

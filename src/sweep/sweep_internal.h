@@ -79,6 +79,20 @@ static inline int fl_sweep_coord_ok(double x)
     return fabs(x) <= FL_SWEEP_MAX_COORD; /* false for NaN and infinities too */
 }
 
+/* Checks n coordinates for new positions of a moving shape: the index of the first one that
+ * fails fl_sweep_coord_ok, or n when all pass, in which case *scale has grown to the largest
+ * |coordinate| (the rounding slack's scale only grows). */
+static inline size_t fl_sweep_coords_scale(const double *x, size_t n, double *scale)
+{
+    double s = *scale;
+    for (size_t i = 0; i < n; i++) {
+        if (!fl_sweep_coord_ok(x[i])) return i;
+        s = fmax(s, fabs(x[i]));
+    }
+    *scale = s;
+    return n;
+}
+
 static inline int fl_sweep_is_leaf(const fl_sweep_node *node)
 {
     return node->child[0] == FL_SWEEP_LEAF;

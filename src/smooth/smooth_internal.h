@@ -143,6 +143,11 @@ size_t g1_emit_cross_split(const fl_mesh *m, const uint32_t *opp, uint32_t h,
 fl_status g1_six_split(const fl_mesh *m, const double *normals, const double *tan,
                        double tension, fl_g1_surface *s, fl_error *err);
 
+/* Moves the two control points next to every patch corner at a mesh vertex by a few ulps
+ * onto the vertex's tangent plane (snap.c): the patch normal there is then the vertex normal
+ * to ~1e-3 of an ulp's tilt instead of one rounding. Shared points stay bit-identical. */
+void g1_snap_corner_points(fl_g1_surface *s);
+
 /* fl_g1_surface_build after the mesh check (surface.c); o->scheme may be FL_G1_AUTO. */
 fl_status g1_build_checked(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_surface *s,
                           fl_error *err);

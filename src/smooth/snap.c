@@ -21,7 +21,7 @@
 
 #include "smooth/smooth_internal.h"
 
-enum { SNAP_R = 6, SNAP_MAX_ULPS = 1024 };
+enum { SNAP_R = 6, SNAP_R2 = 24, SNAP_MAX_ULPS = 1024 };
 
 /* (p - v) . n in long double: the differences are exact unless p and v are far apart, the
  * products carry 64-bit mantissas. */
@@ -39,20 +39,43 @@ static double ulp_of(double x)
     return nextafter(x, INFINITY) - x;
 }
 
-/* How many ulps of x one step moves so that the residual moves by about `span` (n_x the
- * normal's component): at least 1, at most SNAP_MAX_ULPS / SNAP_R so no point moves more than
- * SNAP_MAX_ULPS ulps (1e-13 relative: far below any G1 tolerance). */
-static double step_ulps(double x, double nx, double span)
+/* The step for a coordinate with normal component nx so that one step moves the residual by
+ * about `span` (rounded up to whole ulps of x when up, else to the nearest): at least one ulp
+ * of x, at most `cap` (an absolute bound on the move). */
+static double step_for(double x, double nx, double span, double cap, int up)
 {
-    double per = ulp_of(x) * fabs(nx), k = floor(span / per);
-    if (!(k >= 1)) return 1;
-    return k > SNAP_MAX_ULPS / SNAP_R ? SNAP_MAX_ULPS / SNAP_R : k;
+    double st = span / fabs(nx), u = ulp_of(x);
+    if (!(st > u)) return u;
+    return st < cap ? u * (up ? ceil(st / u) : nearbyint(st / u)) : cap;
 }
 
-/* Moves p by at most SNAP_MAX_ULPS ulps a coordinate to a double near the plane through v with
- * normal n. The residual changes in steps of g = ulp(p_c) |n_c| when p_c (n's largest
+/* The grid p_a + i ka, p_b + j kb (|i|, |j| <= r), p_c solved and rounded three ways; keeps in
+ * out the candidate of least residual below *best (updated), stopping once it is <= enough. */
+static void search(const double *p, const double *v, const double *n, int a, int b, int c,
+                   double ka, double kb, int r, double enough, long double *best, double *out)
+{
+    for (int i = -r; i <= r && *best > (long double)enough; i++)
+        for (int j = -r; j <= r; j++) {
+            double pa = p[a] + i * ka, pb = p[b] + j * kb;
+            long double part = ((long double)pa - v[a]) * n[a] + ((long double)pb - v[b]) * n[b];
+            double ideal = (double)((long double)v[c] - part / n[c]);
+            double cand[3] = {nextafter(ideal, -INFINITY), ideal, nextafter(ideal, INFINITY)};
+            for (int q = 0; q < 3; q++) {
+                long double res = fabsl(part + ((long double)cand[q] - v[c]) * n[c]);
+                if (res < *best) { /* NaN is never smaller: it cannot be chosen */
+                    *best = res;
+                    out[a] = pa;
+                    out[b] = pb;
+                    out[c] = cand[q];
+                }
+            }
+        }
+}
+
+/* Moves p by at most SNAP_MAX_ULPS ulps of its largest coordinate (1e-13 relative: far below
+ * any G1 tolerance) to a double near the plane through v with normal n. The residual changes in steps of g = ulp(p_c) |n_c| when p_c (n's largest
  * component) is re-rounded; the two other coordinates are stepped so that their (2R + 1)^2
- * combinations shift it by multiples of about g / (2R + 1)^2 (where n is not too close to an
+ * combinations shift it by multiples of about g / (2R + 1)^2 (unless n is within ~5e-4 of an
  * axis), and for each the best rounding of p_c is taken: a residual near g / 338. Returns
  * without change for non-finite input or a zero normal. */
 static void snap_point(double *p, const double *v, const double *n)
@@ -64,32 +87,21 @@ static void snap_point(double *p, const double *v, const double *n)
         if (fabs(n[d]) > fabs(n[c])) c = d;
     if (!(fabs(n[c]) > 0)) return;
     int a = (c + 1) % 3, b = (c + 2) % 3;
+    if (fabs(n[b]) > fabs(n[a])) a = b, b = (c + 1) % 3; /* a: the coarse steps */
     double g = ulp_of(p[c]) * fabs(n[c]), w = 2 * SNAP_R + 1;
     if (best <= (long double)g / 1024) return; /* good enough: leave it bit for bit */
-    double ka = step_ulps(p[a], n[a], g / w) * ulp_of(p[a]);
-    double kb = step_ulps(p[b], n[b], g / (w * w)) * ulp_of(p[b]);
-    double pa[2 * SNAP_R + 1], pb[2 * SNAP_R + 1], out[3];
-    for (int k = -SNAP_R; k <= SNAP_R; k++) {
-        pa[k + SNAP_R] = p[a] + k * ka;
-        pb[k + SNAP_R] = p[b] + k * kb;
-    }
+    double big = ulp_of(fmax(fabs(p[0]), fmax(fabs(p[1]), fabs(p[2])))) * SNAP_MAX_ULPS / SNAP_R;
+    /* the coarse steps cover g, the fine ones one coarse step */
+    double ka = step_for(p[a], n[a], g / w, big, 1);
+    double kb = step_for(p[b], n[b], ka * fabs(n[a]) / w, big, 0);
+    double out[3];
     memcpy(out, p, sizeof out);
-    for (int i = 0; i < 2 * SNAP_R + 1 && best > (long double)g / 1024; i++)
-        for (int j = 0; j < 2 * SNAP_R + 1; j++) {
-            long double part = ((long double)pa[i] - v[a]) * n[a] +
-                               ((long double)pb[j] - v[b]) * n[b];
-            double ideal = (double)((long double)v[c] - part / n[c]);
-            double cand[3] = {nextafter(ideal, -INFINITY), ideal, nextafter(ideal, INFINITY)};
-            for (int q = 0; q < 3; q++) {
-                long double r = fabsl(part + ((long double)cand[q] - v[c]) * n[c]);
-                if (r < best) { /* NaN is never smaller: it cannot be chosen */
-                    best = r;
-                    out[a] = pa[i];
-                    out[b] = pb[j];
-                    out[c] = cand[q];
-                }
-            }
-        }
+    search(p, v, n, a, b, c, ka, kb, SNAP_R, g / 1024, &best, out);
+    /* where the ulps of p_a, p_b move the residual by nearly whole multiples of g (ulp ratios
+     * of 8 or 16 times a ratio of normal components near an integer) the grid cannot spread
+     * it: then every combination of single ulps in a wider box */
+    if (best > (long double)g / 256)
+        search(p, v, n, a, b, c, ulp_of(p[a]), ulp_of(p[b]), SNAP_R2, g / 1024, &best, out);
     memcpy(p, out, sizeof out);
 }
 

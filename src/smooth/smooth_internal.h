@@ -68,7 +68,8 @@ void g1_edge_point(const double *p, const double *tan, double tension, double *o
 
 /* The tangent of every half-edge at its start vertex (3 doubles a half-edge): the edge
  * projected on the vertex's tangent plane, rotated within the plane at the vertices whose star
- * projects onto a corner below 1e-3 rad if spread_corners (tangents.c; *spread counts
+ * projects onto a corner below 1e-3 rad, and with lengths blended towards their mean where a
+ * micro corner would have a sine below 1e-3, if spread_corners (tangents.c; *spread counts
  * them). */
 fl_status g1_edge_tangents(const fl_mesh *m, const double *normals, const uint32_t *opp,
                            int spread_corners, double *tan, size_t *spread, fl_error *err);

@@ -8,12 +8,14 @@
  * normal at V is the cross product of the two spokes P - V, so delta tilts it by
  * delta / (|P - V| sin(corner)): 1.7e-10 on double-torus-example.off, where a spoke was 1.1e-6
  * long, and 3e-11 on mpi_triang.off (spokes of 2e-3 at |P| = 6). Among the doubles within
- * 1024 units in the last place of P in the two coordinates where n is smallest (stepped so
- * their (2R + 1)^2 combinations spread the residual evenly), the third coordinate is solved
- * for the plane and rounded; the candidate with the smallest residual (P - V) . n, evaluated
- * in long double, is kept: about 1/338 of an ulp at R = 6, which takes the tilt below 1e-13 on
- * those meshes. The move is at most 1e-13 relative, far below any tolerance of the G1
- * conditions, and it depends only on (P, V, n): a control point shared by two patches (the
+ * 1024 units in the last place of P's largest coordinate in the two coordinates where n is
+ * smallest (stepped so their (2R + 1)^2 combinations spread the residual evenly; a second pass
+ * of single ulps where that fails), the third coordinate is solved for the plane and rounded;
+ * the first candidate whose residual (P - V) . n, evaluated in long double, is below eps / 8
+ * of |P - V| is kept (else the smallest found, typically ~1/300 of an ulp), which takes the
+ * tilt below 3e-13 on those meshes. The move is at most 1024 ulps of |P| and 2^-40 |P - V|
+ * (the G1 conditions see it relative to the spoke: with 1024 ulps alone elk.off's jump grew
+ * from 2e-8 to 8e-8 degrees at a spoke of 1.9e-4 at |P| = 69), and it depends only on (P, V, n): a control point shared by two patches (the
  * boundary point of an edge, the spoke point of two micro patches) moves the same way in both,
  * so shared points stay bit-identical. */
 #include <math.h>
@@ -21,7 +23,7 @@
 
 #include "smooth/smooth_internal.h"
 
-enum { SNAP_R = 6, SNAP_R2 = 24, SNAP_MAX_ULPS = 1024 };
+enum { SNAP_R = 6, SNAP_R2 = 16, SNAP_MAX_ULPS = 1024 };
 
 /* (p - v) . n in long double: the differences are exact unless p and v are far apart, the
  * products carry 64-bit mantissas. */
@@ -49,35 +51,48 @@ static double step_for(double x, double nx, double span, double cap, int up)
     return st < cap ? u * (up ? ceil(st / u) : nearbyint(st / u)) : cap;
 }
 
-/* The grid p_a + i ka, p_b + j kb (|i|, |j| <= r), p_c solved and rounded three ways; keeps in
- * out the candidate of least residual below *best (updated), stopping once it is <= enough. */
-static void search(const double *p, const double *v, const double *n, int a, int b, int c,
-                   double ka, double kb, int r, double enough, long double *best, double *out)
+/* The grid p_a + i ka, p_b + j kb (|i| <= ra, |j| <= rb, both <= SNAP_R2), p_c solved in long
+ * double and rounded to the nearest double (its neighbours are a whole step of the residual
+ * further); keeps in out the candidate of least residual below *best (updated), stopping once
+ * it is <= enough. */
+static void search(const double *p, const double *v, const double *n, const int *axes,
+                   const double *step, const int *range, double enough, long double *best,
+                   double *out)
 {
-    for (int i = -r; i <= r && *best > (long double)enough; i++)
-        for (int j = -r; j <= r; j++) {
-            double pa = p[a] + i * ka, pb = p[b] + j * kb;
-            long double part = ((long double)pa - v[a]) * n[a] + ((long double)pb - v[b]) * n[b];
-            double ideal = (double)((long double)v[c] - part / n[c]);
-            double cand[3] = {nextafter(ideal, -INFINITY), ideal, nextafter(ideal, INFINITY)};
-            for (int q = 0; q < 3; q++) {
-                long double res = fabsl(part + ((long double)cand[q] - v[c]) * n[c]);
-                if (res < *best) { /* NaN is never smaller: it cannot be chosen */
-                    *best = res;
-                    out[a] = pa;
-                    out[b] = pb;
-                    out[c] = cand[q];
-                }
+    int a = axes[0], b = axes[1], c = axes[2], r0 = range[0], r1 = range[1];
+    long double ra[2 * SNAP_R2 + 1], rb[2 * SNAP_R2 + 1], inv = 1.0L / n[c];
+    for (int k = -r0; k <= r0; k++) /* the residual's parts from p_a and p_b */
+        ra[k + r0] = ((long double)(p[a] + k * step[0]) - v[a]) * n[a];
+    for (int k = -r1; k <= r1; k++)
+        rb[k + r1] = ((long double)(p[b] + k * step[1]) - v[b]) * n[b];
+    for (int i = 0; i <= 2 * r0 && *best > (long double)enough; i++)
+        for (int j = 0; j <= 2 * r1; j++) {
+            long double part = ra[i] + rb[j];
+            double cand = (double)((long double)v[c] - part * inv);
+            long double res = fabsl(part + ((long double)cand - v[c]) * n[c]);
+            if (res < *best) { /* NaN is never smaller: it cannot be chosen */
+                *best = res;
+                out[a] = p[a] + (i - r0) * step[0];
+                out[b] = p[b] + (j - r1) * step[1];
+                out[c] = cand;
             }
         }
 }
 
-/* Moves p by at most SNAP_MAX_ULPS ulps of its largest coordinate (1e-13 relative: far below
- * any G1 tolerance) to a double near the plane through v with normal n. The residual changes in steps of g = ulp(p_c) |n_c| when p_c (n's largest
- * component) is re-rounded; the two other coordinates are stepped so that their (2R + 1)^2
- * combinations shift it by multiples of about g / (2R + 1)^2 (unless n is within ~5e-4 of an
- * axis), and for each the best rounding of p_c is taken: a residual near g / 338. Returns
- * without change for non-finite input or a zero normal. */
+/* How many steps of size st stay within cap (at most r). */
+static int steps_within(double st, double cap, int r)
+{
+    double k = floor(cap / st);
+    return k >= r ? r : k >= 1 ? (int)k : 0;
+}
+
+/* Moves p by at most SNAP_MAX_ULPS ulps of its largest coordinate and at most 2^-40 |p - v|
+ * (so the G1 conditions, which see the move relative to the spoke p - v, move by ~1e-12) to a
+ * double near the plane through v with normal n. The residual changes in steps of
+ * g = ulp(p_c) |n_c| when p_c (n's largest component) is re-rounded; the two other
+ * coordinates are stepped so that their (2R + 1)^2 combinations shift it by multiples of about
+ * g / (2R + 1)^2 (unless n is within ~5e-4 of an axis or the cap binds), and for each the best
+ * rounding of p_c is taken. Returns without change for non-finite input or a zero normal. */
 static void snap_point(double *p, const double *v, const double *n)
 {
     long double best = fabsl(plane_residual(p, v, n));
@@ -88,20 +103,33 @@ static void snap_point(double *p, const double *v, const double *n)
     if (!(fabs(n[c]) > 0)) return;
     int a = (c + 1) % 3, b = (c + 2) % 3;
     if (fabs(n[b]) > fabs(n[a])) a = b, b = (c + 1) % 3; /* a: the coarse steps */
-    double g = ulp_of(p[c]) * fabs(n[c]), w = 2 * SNAP_R + 1;
-    if (best <= (long double)g / 1024) return; /* good enough: leave it bit for bit */
-    double big = ulp_of(fmax(fabs(p[0]), fmax(fabs(p[1]), fabs(p[2])))) * SNAP_MAX_ULPS / SNAP_R;
+    double g = ulp_of(p[c]) * fabs(n[c]), w = 2 * SNAP_R + 1, pv[3];
+    g1_sub(p, v, pv);
+    double spoke = g1_length(pv);
+    /* good enough: the tilt residual / |p - v| an eighth of eps (below the evaluation's own
+     * rounding), or 1/4096 of g (no further); then the point is left bit for bit */
+    double enough = fmax(ldexp(spoke, -56), g / 4096);
+    if (best <= (long double)enough) return;
+    double u = ulp_of(fmax(fabs(p[0]), fmax(fabs(p[1]), fabs(p[2]))));
+    double cap = fmin(u * SNAP_MAX_ULPS, fmax(ldexp(spoke, -32), u * SNAP_R2));
     /* the coarse steps cover g, the fine ones one coarse step */
-    double ka = step_for(p[a], n[a], g / w, big, 1);
-    double kb = step_for(p[b], n[b], ka * fabs(n[a]) / w, big, 0);
-    double out[3];
+    double ka = step_for(p[a], n[a], g / w, cap / SNAP_R, 1);
+    double kb = step_for(p[b], n[b], ka * fabs(n[a]) / w, cap / SNAP_R, 0);
+    double out[3], step[2] = {ka, kb};
+    int axes[3] = {a, b, c};
+    int range[2] = {steps_within(ka, cap, SNAP_R), steps_within(kb, cap, SNAP_R)};
     memcpy(out, p, sizeof out);
-    search(p, v, n, a, b, c, ka, kb, SNAP_R, g / 1024, &best, out);
+    search(p, v, n, axes, step, range, enough, &best, out);
     /* where the ulps of p_a, p_b move the residual by nearly whole multiples of g (ulp ratios
      * of 8 or 16 times a ratio of normal components near an integer) the grid cannot spread
      * it: then every combination of single ulps in a wider box */
-    if (best > (long double)g / 256)
-        search(p, v, n, a, b, c, ulp_of(p[a]), ulp_of(p[b]), SNAP_R2, g / 1024, &best, out);
+    if (best > 4 * (long double)enough) {
+        step[0] = ulp_of(p[a]);
+        step[1] = ulp_of(p[b]);
+        range[0] = steps_within(step[0], cap, SNAP_R2);
+        range[1] = steps_within(step[1], cap, SNAP_R2);
+        search(p, v, n, axes, step, range, enough, &best, out);
+    }
     memcpy(p, out, sizeof out);
 }
 

@@ -20,7 +20,15 @@
  * alpha * pi (alpha ~ 1e-3 on the meshes above). Lengths stay those of the projected edges.
  * A gap within min_gap of pi is as bad (the spoke W - V = (E - V + E' - V) / 3 towards the
  * split point, of two nearly opposite vectors, splits it into micro corners), so gaps above
- * pi - min_gap are pulled below it the same way. */
+ * pi - min_gap are pulled below it the same way.
+ *
+ * Round 10 (issue #11): the micro corners, not only the macro gaps. The spoke towards the split
+ * point has the direction of t_i + t_i+1, so a tangent much shorter than its neighbour gives a
+ * micro corner of about (short / long) * gap: an edge seen nearly end-on from the normal
+ * (double-torus-example.off: a projected length of 6.5e-6 beside 0.25) made micro corners of
+ * 1.8e-5 rad and normal errors of 5.4e-10. So where a micro corner's sine is below min_micro
+ * the lengths are blended towards their mean as well (and the gaps further towards equal),
+ * by the least amount that lifts every micro corner to min_micro. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

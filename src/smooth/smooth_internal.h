@@ -68,7 +68,8 @@ void g1_edge_point(const double *p, const double *tan, double tension, double *o
 
 /* The tangent of every half-edge at its start vertex (3 doubles a half-edge): the edge
  * projected on the vertex's tangent plane, rotated within the plane at the vertices whose star
- * projects onto a corner below 1e-3 rad if spread_corners (tangents.c; *spread counts
+ * projects onto a corner below 1e-3 rad, and with lengths blended towards their mean where a
+ * micro corner would have a sine below 1e-3, if spread_corners (tangents.c; *spread counts
  * them). */
 fl_status g1_edge_tangents(const fl_mesh *m, const double *normals, const uint32_t *opp,
                            int spread_corners, double *tan, size_t *spread, fl_error *err);
@@ -142,6 +143,11 @@ size_t g1_emit_cross_split(const fl_mesh *m, const uint32_t *opp, uint32_t h,
  * every patch of s (allocated for 6 patches a triangle) and s->singular_edges. */
 fl_status g1_six_split(const fl_mesh *m, const double *normals, const double *tan,
                        double tension, fl_g1_surface *s, fl_error *err);
+
+/* Moves the two control points next to every patch corner at a mesh vertex by a few ulps
+ * onto the vertex's tangent plane (snap.c): the patch normal there is then the vertex normal
+ * to ~1e-3 of an ulp's tilt instead of one rounding. Shared points stay bit-identical. */
+void g1_snap_corner_points(fl_g1_surface *s);
 
 /* fl_g1_surface_build after the mesh check (surface.c); o->scheme may be FL_G1_AUTO. */
 fl_status g1_build_checked(const fl_mesh *m, const fl_g1_surface_options *o, fl_g1_surface *s,

@@ -20,7 +20,15 @@
  * alpha * pi (alpha ~ 1e-3 on the meshes above). Lengths stay those of the projected edges.
  * A gap within min_gap of pi is as bad (the spoke W - V = (E - V + E' - V) / 3 towards the
  * split point, of two nearly opposite vectors, splits it into micro corners), so gaps above
- * pi - min_gap are pulled below it the same way. */
+ * pi - min_gap are pulled below it the same way.
+ *
+ * Round 10 (issue #11): the micro corners, not only the macro gaps. The spoke towards the split
+ * point has the direction of t_i + t_i+1, so a tangent much shorter than its neighbour gives a
+ * micro corner of about (short / long) * gap: an edge seen nearly end-on from the normal
+ * (double-torus-example.off: a projected length of 6.5e-6 beside 0.25) made micro corners of
+ * 1.8e-5 rad and normal errors of 5.4e-10. So where a micro corner's sine is below min_micro
+ * the lengths are blended towards their mean as well (and the gaps further towards equal),
+ * by the least amount that lifts every micro corner to min_micro. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +37,12 @@
 
 /* 1e-3 rad (0.057 degrees): the tilt bound above is then ~1e-12 rad for |p| / |spoke| ~ 10. */
 static const double min_gap = 1e-3;
+
+/* Round 10 (issue #11, normals to 1e-12): the smallest sine of a micro corner at a vertex.
+ * The patch normal there is the cross product of the corner's two spokes, evaluated in double:
+ * its rounding alone is a few eps / sine (2e-13 at 1e-3), and a control point off the tangent
+ * plane by delta tilts it by delta / (|spoke| sine) (snap.c keeps delta ~1e-3 ulp). */
+static const double min_micro = 1e-3;
 
 enum { SPREAD_STAR = 256 }; /* larger stars keep their projected edges */
 
@@ -47,6 +61,34 @@ static void project(const fl_mesh *m, const double *normals, uint32_t h, double 
     double s = g1_dot(d, n);
     for (int k = 0; k < 3; k++)
         out[k] = d[k] - s * n[k];
+}
+
+/* The sine of the smaller of the two micro corners a patch gets at V inside the corner
+ * between tangents of lengths a and b at angle g: the spoke towards the split point (W - V in
+ * the three-split, N - V in the six-split, both (E - V + E' - V) / 3) has the direction of the
+ * sum of the two tangents, so the corners are b sin g / |sum| and a sin g / |sum|. 0 for a
+ * zero spoke, NaN for NaN input. */
+static double micro_sine(double a, double b, double g)
+{
+    double s = sqrt(a * a + b * b + 2 * a * b * cos(g));
+    if (s == 0) return 0;
+    return fmin(a, b) * sin(g) / s;
+}
+
+/* Every micro corner of a star with gaps g[0..k) (gap i between tangents i and i + 1) and
+ * tangent lengths len[0..k) has a sine of at least min_micro (NaN fails). */
+static int micro_corners_ok(size_t k, const double *g, const double *len)
+{
+    for (size_t i = 0; i < k; i++)
+        if (!(micro_sine(len[i], len[(i + 1) % k], g[i]) >= min_micro)) return 0;
+    return 1;
+}
+
+/* out[i] = (1 - alpha) gap[i] + alpha even: a convex combination keeps the cyclic order. */
+static void blend_gaps(size_t k, const double *gap, double even, double alpha, double *out)
+{
+    for (size_t i = 0; i < k; i++)
+        out[i] = (1 - alpha) * gap[i] + alpha * even;
 }
 
 /* Spreads the star of vertex v whose half-edges are ring[0..k) in counter-clockwise order;
@@ -79,13 +121,22 @@ static int spread_star(const fl_mesh *m, const double *n, const uint32_t *ring, 
     }
     const double pi = 3.14159265358979, max_gap = pi - min_gap;
     if (k < 3 || !isfinite(sum)) return 0;
-    double largest = 0;
+    double largest = 0, base[SPREAD_STAR], mean = 0, blend[SPREAD_STAR];
     for (size_t i = 0; i < k; i++)
         largest = fmax(largest, gap[i]);
-    if (smallest >= min_gap && largest <= max_gap) return 0;
     /* A star that does not wind once around n with gaps below pi (only where no valid normal
-     * exists: normals.c) gets equally spaced tangents in its cyclic order (alpha = 1). */
+     * exists: normals.c) gets equally spaced tangents in its cyclic order (alpha = 1), with
+     * the 3-D edge lengths: the projection may be a point (an edge along n). */
     int winds = fabs(sum - two_pi) < 1e-9 && largest < pi;
+    for (size_t i = 0; i < k; i++) {
+        double e[3];
+        uint32_t h = ring[i];
+        g1_sub(m->xyz + 3 * m->tri[3 * (h / 3) + (h + 1) % 3], m->xyz + 3 * m->tri[h], e);
+        base[i] = winds ? g1_length(tan + 3 * (size_t)h) : g1_length(e);
+        mean += base[i] / (double)k;
+    }
+    int gaps_ok = smallest >= min_gap && largest <= max_gap;
+    if (gaps_ok && (!winds || micro_corners_ok(k, gap, base))) return 0;
     /* gap' in [min_gap, pi - min_gap]: a gap near pi splits into two micro corners through
      * the spoke W - V = (E - V + E' - V) / 3 of nearly opposite vectors, which is as
      * degenerate (case 1 of tests/smooth/test_g1_degenerate_corner.c: vertex c of a needle). */
@@ -94,22 +145,38 @@ static int spread_star(const fl_mesh *m, const double *n, const uint32_t *ring, 
         if (gap[i] < min_gap) alpha = fmax(alpha, (min_gap - gap[i]) / (even - gap[i]));
         if (gap[i] > max_gap) alpha = fmax(alpha, (gap[i] - max_gap) / (gap[i] - even));
     }
-    if (!(alpha > 0 && alpha <= 1)) return 0;
+    if (!(alpha >= 0 && alpha <= 1)) return 0;
+    /* Then the micro corners (round 10): the least s in [0, 1] for which the gaps blended by
+     * alpha + s (1 - alpha) and the lengths blended by s towards their mean give every micro
+     * corner a sine of at least min_micro. s = 1 (equal gaps and lengths: micro corners of
+     * pi / k) always does; bisection, 40 steps. */
+    double sb = 0;
+    blend_gaps(k, gap, even, alpha, blend);
+    if (!micro_corners_ok(k, blend, base)) {
+        double lo = 0, hi = 1, len[SPREAD_STAR];
+        for (int it = 0; it < 40; it++) {
+            double mid = (lo + hi) / 2;
+            blend_gaps(k, gap, even, alpha + mid * (1 - alpha), blend);
+            for (size_t i = 0; i < k; i++)
+                len[i] = (1 - mid) * base[i] + mid * mean;
+            if (micro_corners_ok(k, blend, len))
+                hi = mid;
+            else
+                lo = mid;
+        }
+        sb = hi;
+        blend_gaps(k, gap, even, alpha + sb * (1 - alpha), blend);
+    }
     double at = 0, orig = 0, shift = 0, *psi = gap; /* new angles, relative to phi[0] */
     for (size_t i = 0; i < k; i++) { /* no net rotation: mean change of angle 0 */
         double g = gap[i];
         psi[i] = at;
         shift += (at - orig) / (double)k;
-        at += (1 - alpha) * g + alpha * even;
+        at += blend[i];
         orig += g;
     }
     for (size_t i = 0; i < k; i++) {
-        double *t = tan + 3 * (size_t)ring[i], len = g1_length(t), e[3];
-        if (!winds) { /* the projection may be a point (an edge along n): the edge's length */
-            uint32_t h = ring[i];
-            g1_sub(m->xyz + 3 * m->tri[3 * (h / 3) + (h + 1) % 3], m->xyz + 3 * m->tri[h], e);
-            len = g1_length(e);
-        }
+        double *t = tan + 3 * (size_t)ring[i], len = (1 - sb) * base[i] + sb * mean;
         double a = phi[0] + psi[i] - shift, c = cos(a), sn = sin(a);
         for (int d = 0; d < 3; d++)
             t[d] = len * (c * u[d] + sn * w[d]);

@@ -31,6 +31,8 @@
 #define G3_PI 3.14159265358979323846
 #define G3_BINS_PER_ARC 8 /* bins per blocking half-arc atan(1/s) */
 #define G3_MAX_REACH 8
+#define G3_QUICK_RINGS 2    /* rings around m the quick drop test looks at */
+#define G3_QUICK_ERR 1e-5   /* bound on the error of gamma3_quick_angle (radians), see there */
 
 typedef struct g3_ctx {
     const graph_grid *grid;
@@ -44,6 +46,10 @@ typedef struct g3_ctx {
     int reach;        /* bins a point can block on each side of its own */
     double ca[G3_MAX_REACH + 1], cb[G3_MAX_REACH + 1]; /* cos, s sin of the worst angle */
     double kill[G3_MAX_REACH + 1]; /* f/l below which a point's threshold is under l/sqrt(3) */
+    int quick_reach;  /* the same for the quick drop test, whose angles err by G3_QUICK_ERR */
+    double quick_kill[G3_MAX_REACH + 1];
+    int plain;        /* 1: the per-pair scan alone (no quick drop test), for the tests */
+    gamma3_stats *stats;
     double *limit;    /* H[j] of the current edge */
     unsigned char *dead; /* bins whose limit is below l/sqrt(3) (no third vertex there) */
     size_t dead_count;
@@ -82,17 +88,27 @@ static int edge_init(g3_edge *E, const double *xyz, uint32_t a, uint32_t b)
     return 1;
 }
 
-/* The cylindrical coordinates of p around the edge: returns the angle in [-pi, pi], or NAN when
- * it is ill-conditioned (p within 1e-6 |p - m| of the axis, or not finite); *dist2 = |p - m|^2,
- * *radius = the distance from the axis. */
-static double axis_coords(const g3_edge *E, const double *p, double *dist2, double *radius)
+/* The components of p - m normal to the edge, (x1, x2) in the frame (u1, u2); returns 0 when
+ * the angle is ill-conditioned (p within 1e-6 |p - m| of the axis, or not finite). *dist2 =
+ * |p - m|^2, *radius = the distance from the axis. */
+static int axis_plane(const g3_edge *E, const double *p, double *x1, double *x2, double *dist2,
+                      double *radius)
 {
     double d[3] = {p[0] - E->m[0], p[1] - E->m[1], p[2] - E->m[2]};
-    double x1 = dot3(d, E->u1), x2 = dot3(d, E->u2);
+    *x1 = dot3(d, E->u1);
+    *x2 = dot3(d, E->u2);
     *dist2 = dot3(d, d);
-    double r2 = x1 * x1 + x2 * x2;
+    double r2 = *x1 * *x1 + *x2 * *x2;
     *radius = sqrt(r2);
-    if (!(r2 > 1e-12 * *dist2) || !isfinite(r2)) return NAN;
+    return r2 > 1e-12 * *dist2 && isfinite(r2);
+}
+
+/* The cylindrical coordinates of p around the edge: returns the angle in [-pi, pi], or NAN when
+ * it is ill-conditioned (see axis_plane). */
+static double axis_coords(const g3_edge *E, const double *p, double *dist2, double *radius)
+{
+    double x1, x2;
+    if (!axis_plane(E, p, &x1, &x2, dist2, radius)) return NAN;
     return atan2(x2, x1);
 }
 
@@ -147,6 +163,69 @@ static double max_limit(const g3_ctx *c)
     for (size_t k = 0; k < c->bins; k++)
         if (!c->dead[k] && !(c->limit[k] <= h)) h = c->limit[k]; /* NaN: unbounded */
     return isnan(h) ? INFINITY : h;
+}
+
+/* atan2(y, x) for finite (x, y) != (0, 0), within G3_QUICK_ERR: a minimax polynomial for atan on
+ * [0, 1] (error below 1.7e-6 rad, checked densely by tests/graphs/test_gamma3_quick.c) and the
+ * octant symmetries. Only the quick drop test uses it; its kill arcs are shortened by
+ * G3_QUICK_ERR, so the error cannot make it drop a pair the exact arcs would not. */
+double gamma3_quick_angle(double x, double y)
+{
+    double ax = fabs(x), ay = fabs(y), mx = fmax(ax, ay), mn = fmin(ax, ay);
+    double a = mn / mx, s = a * a;
+    double r = a * (0.99997726 +
+                    s * (-0.33262347 +
+                         s * (0.19354346 + s * (-0.11643287 + s * (0.05265332 + s * -0.01172120)))));
+    if (ay > ax) r = 0.5 * G3_PI - r;
+    if (x < 0) r = G3_PI - r;
+    return y < 0 ? -r : r;
+}
+
+/* The quick drop test (docs/gamma.md, "Quick drop test"): the points of the rings 0 ..
+ * G3_QUICK_RINGS around m, visited from both ends of each ring (the cells come in lexicographic
+ * order, so the two ends lie on opposite sides of m and the azimuths spread fast), kill the bins
+ * within their kill arc (quick_kill: the arc of block_point shortened by G3_QUICK_ERR). Only the
+ * kills are tracked, no limits and no square roots of thresholds. Returns 1 when every bin is
+ * killed: then every azimuth around ab lies within the kill arc of some point q (the arc bounds
+ * the true angle to q, the error of q's angle included), so q lies in the lens of every
+ * triangle abc with ab shortest (the lens test above) and no triangle with shortest edge ab is
+ * accepted. 0 when not shown (the pair goes to scan_edge), -1 out of memory. */
+static int quick_drop(g3_ctx *c, const g3_edge *E)
+{
+    double l2 = 0.25 * E->len2, l = sqrt(l2);
+    long nb = (long)c->bins;
+    size_t left = c->bins;
+    memset(c->dead, 0, c->bins);
+    c->seen.count = 0;
+    for (size_t r = 0; r <= G3_QUICK_RINGS; r++) {
+        int beyond = 0;
+        size_t first = c->seen.count;
+        if (graph_grid_ring(c->grid, E->m, r, &c->seen, &beyond) < 0) return -1;
+        if (beyond) return 0;
+        const uint32_t *items = c->seen.data;
+        size_t count = c->seen.count - first;
+        for (size_t j = 0; j < count; j++) {
+            uint32_t q = items[first + ((j & 1) ? count - 1 - j / 2 : j / 2)];
+            double x1, x2, d2, rq;
+            if (q == E->a || q == E->b ||
+                !axis_plane(E, c->xyz + 3 * (size_t)q, &x1, &x2, &d2, &rq))
+                continue;
+            double f = apex_height(d2, rq, l2);
+            if (!(f < l * c->quick_kill[0])) continue; /* kills nothing (or not finite) */
+            int reach = 0; /* quick_kill decreases: the bins killed are contiguous */
+            while (reach < c->quick_reach && f < l * c->quick_kill[reach + 1])
+                reach++;
+            long home = (long)bin_of(c, gamma3_quick_angle(x1, x2));
+            for (long d = -reach; d <= reach; d++) {
+                long kk = home + d;
+                size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
+                left -= !c->dead[k];
+                c->dead[k] = 1;
+            }
+            if (left == 0) return 1;
+        }
+    }
+    return 0;
 }
 
 /* Scans rings around m, lowering the bin limits, until the edge is dead (returns 1) or every
@@ -221,8 +300,21 @@ static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
             if (q != a && q != b && sort3_check(c, a, b, q, out) < 0) return -1;
         return 0;
     }
+    if (!c->plain) {
+        int q = quick_drop(c, &E);
+        if (q < 0) return -1;
+        if (q) {
+            if (c->stats) c->stats->quick_dropped++;
+            return 0;
+        }
+    }
     int r = scan_edge(c, &E);
-    if (r) return r < 0 ? -1 : 0;
+    if (r < 0) return -1;
+    if (c->stats) {
+        if (r) c->stats->scan_dropped++;
+        else c->stats->scan_kept++;
+    }
+    if (r) return 0;
     const uint32_t *items = c->seen.data;
     for (size_t i = 0; i < c->seen.count; i++) {
         uint32_t q = items[i];
@@ -249,6 +341,27 @@ static int run_pair(void *user, uint32_t a, uint32_t b)
                     fmin(1.0, (double)run->done / (double)run->total)))
         return -2;
     return edge_triangles(run->c, a, b, run->out);
+}
+
+/* For a point in bin i and a third vertex in bin i + d (|d| <= reach, the return value), the
+ * angle between them is at most (d+1) widths, plus `err` for an inexact angle of the point:
+ * kill[d] is f/l below which the point's threshold there is under l/sqrt(3) (with a margin for
+ * the rounding of f, relative 1e-8 of l), ca[d], cb[d] (when not NULL) the cos and s sin of
+ * that angle. The table stops where a vertex of the bin can be beyond the arc atan(1/s). */
+static int kill_table(const g3_ctx *c, double err, double *ca, double *cb, double *kill)
+{
+    int reach = 0;
+    for (int d = 0; d <= G3_MAX_REACH; d++) {
+        double phi = (d + 1) * c->width + err + 1e-9, A = cos(phi), B = c->s * sin(phi);
+        if (ca) ca[d] = A;
+        if (cb) cb[d] = B;
+        double k = (A - 2 * B) / sqrt(3.0);
+        kill[d] = k - 1e-7 * fabs(k) - 1e-8;
+        /* A vertex of the bin can be at an angle beyond the arc: no blocking there. */
+        if (!(phi < G3_PI / 2 && A > B * (1 + 1e-9))) break;
+        reach = d;
+    }
+    return reach;
 }
 
 fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p, double kappa,
@@ -278,18 +391,10 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     double arc = atan(1 / c.s), nb = ceil(2 * G3_PI / (arc / G3_BINS_PER_ARC));
     c.bins = nb > 4096 || !(nb >= 1) ? 4096 : nb < 8 ? 8 : (size_t)nb;
     c.width = 2 * G3_PI / (double)c.bins;
-    c.reach = 0;
-    for (int d = 0; d <= G3_MAX_REACH; d++) {
-        double phi = (d + 1) * c.width + 1e-9;
-        c.ca[d] = cos(phi);
-        c.cb[d] = c.s * sin(phi);
-        /* g(h_min)/l with a margin for the rounding of f (relative 1e-8 of l). */
-        double k = (c.ca[d] - 2 * c.cb[d]) / sqrt(3.0);
-        c.kill[d] = k - 1e-7 * fabs(k) - 1e-8;
-        /* A vertex of the bin can be at an angle beyond the arc: no blocking there. */
-        if (!(phi < G3_PI / 2 && c.ca[d] > c.cb[d] * (1 + 1e-9))) break;
-        c.reach = d;
-    }
+    c.reach = kill_table(&c, 0, c.ca, c.cb, c.kill);
+    c.quick_reach = kill_table(&c, G3_QUICK_ERR, NULL, NULL, c.quick_kill);
+    c.plain = (pairs & GAMMA3_PLAIN_SCAN) != 0;
+    c.stats = stats;
     c.limit = fl_alloc_array(c.bins, sizeof *c.limit);
     c.dead = calloc(c.bins, 1);
     if (!c.limit || !c.dead) {
@@ -300,7 +405,7 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     fl_vec_init(&c.seen, sizeof(uint32_t));
     fl_vec_init(&c.scan, sizeof(uint32_t));
     fl_status st = FL_OK;
-    if (pairs == GAMMA3_CELL_PAIRS) {
+    if (pairs & GAMMA3_CELL_PAIRS) {
         g3_run run = {&c, b, progress, user, 0, c.n * (c.n - 1) / 2};
         st = gamma3_cell_pairs(grid, c.s, run_pair, &run, stats, err);
     } else {

@@ -10,7 +10,10 @@
 /* Which vertex pairs go through the per-pair scan. */
 typedef enum gamma3_pairs {
     GAMMA3_ALL_PAIRS = 0, /* every one of the N(N-1)/2 pairs */
-    GAMMA3_CELL_PAIRS = 1 /* a dual-tree recursion; certified cell pairs are skipped */
+    GAMMA3_CELL_PAIRS = 1, /* a dual-tree recursion; certified cell pairs are skipped */
+    /* Flag to OR in: each pair goes straight to the ring scan (no quick drop test), i.e. the
+     * search of round 9, kept as the reference the tests compare the default with. */
+    GAMMA3_PLAIN_SCAN = 2
 } gamma3_pairs;
 
 /* What gamma3_edge_triangles uses (docs/gamma.md, "Certifying far cell pairs"). */
@@ -22,6 +25,9 @@ typedef struct gamma3_stats {
     size_t pairs_certified; /* pairs inside certified cell pairs (never scanned) */
     size_t cert_tries, cert_ok;
     size_t cert_visits;     /* points looked at by the certificates */
+    size_t quick_dropped;   /* pairs dropped by the quick drop test */
+    size_t scan_dropped;    /* pairs dropped by the ring scan */
+    size_t scan_kept;       /* pairs whose candidates went to the exact check */
 } gamma3_stats;
 
 /* gamma3_edge_triangles with an explicit pair strategy; stats may be NULL. */
@@ -29,6 +35,9 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
                                      double kappa, const fl_graph_options *opt,
                                      gamma3_pairs pairs, graph_builder *b, gamma3_stats *stats,
                                      fl_error *err);
+
+/* atan2(y, x) within 1e-5 rad for finite (x, y) != (0, 0) (the quick drop test's angles). */
+double gamma3_quick_angle(double x, double y);
 
 /* An orthonormal frame (e, u1, u2) around the unit vector e (shared by both halves). */
 void gamma3_frame(const double *e, double *u1, double *u2);

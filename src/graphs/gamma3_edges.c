@@ -31,7 +31,7 @@
 #define G3_PI 3.14159265358979323846
 #define G3_BINS_PER_ARC 8 /* bins per blocking half-arc atan(1/s) */
 #define G3_MAX_REACH 8
-#define G3_QUICK_RINGS 2    /* rings around m the quick drop test looks at */
+#define G3_KD_AFTER 1       /* scan_edge goes from rings to the kd-tree after this ring */
 #define G3_QUICK_ERR 1e-5   /* bound on the error of gamma3_quick_angle (radians), see there */
 
 typedef struct g3_ctx {
@@ -49,6 +49,10 @@ typedef struct g3_ctx {
     int quick_reach;  /* the same for the quick drop test, whose angles err by G3_QUICK_ERR */
     double quick_kill[G3_MAX_REACH + 1];
     int plain;        /* 1: the per-pair scan alone (no quick drop test), for the tests */
+    gamma3_kdtree kd; /* the far part of scan_edge (kd_scan); empty when plain */
+    uint32_t *stamp;  /* stamp[q] == pair_stamp: q is already in seen */
+    uint32_t pair_stamp;
+    fl_vec stack;     /* kd_scan's node stack */
     gamma3_stats *stats;
     double *limit;    /* H[j] of the current edge */
     unsigned char *dead; /* bins whose limit is below l/sqrt(3) (no third vertex there) */
@@ -181,56 +185,173 @@ double gamma3_quick_angle(double x, double y)
     return y < 0 ? -r : r;
 }
 
-/* The quick drop test (docs/gamma.md, "Quick drop test"): the points of the rings 0 ..
- * G3_QUICK_RINGS around m, visited from both ends of each ring (the cells come in lexicographic
- * order, so the two ends lie on opposite sides of m and the azimuths spread fast), kill the bins
- * within their kill arc (quick_kill: the arc of block_point shortened by G3_QUICK_ERR). Only the
- * kills are tracked, no limits and no square roots of thresholds. Returns 1 when every bin is
- * killed: then every azimuth around ab lies within the kill arc of some point q (the arc bounds
- * the true angle to q, the error of q's angle included), so q lies in the lens of every
- * triangle abc with ab shortest (the lens test above) and no triangle with shortest edge ab is
- * accepted. 0 when not shown (the pair goes to scan_edge), -1 out of memory. */
+/* The 27 cells of rings 0 and 1: the home cell, then each neighbour followed by the opposite
+ * one, so that the azimuths around the edge spread fast. */
+static const signed char quick_cells[27][3] = {
+    {0, 0, 0},   {1, 0, 0},   {-1, 0, 0},  {0, 1, 0},   {0, -1, 0}, {0, 0, 1},   {0, 0, -1},
+    {1, 1, 1},   {-1, -1, -1}, {1, -1, 1}, {-1, 1, -1}, {1, 1, -1}, {-1, -1, 1}, {1, -1, -1},
+    {-1, 1, 1},  {1, 1, 0},   {-1, -1, 0}, {1, -1, 0},  {-1, 1, 0}, {1, 0, 1},   {-1, 0, -1},
+    {1, 0, -1},  {-1, 0, 1},  {0, 1, 1},   {0, -1, -1}, {0, 1, -1}, {0, -1, 1}};
+
+/* One point of the quick drop test: kills the bins within its kill arc; returns the number of
+ * bins still alive. */
+static size_t quick_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l2,
+                          size_t left)
+{
+    double x1, x2, d2, rq;
+    if (q == E->a || q == E->b || !axis_plane(E, c->xyz + 3 * (size_t)q, &x1, &x2, &d2, &rq))
+        return left;
+    double f = apex_height(d2, rq, l2);
+    if (!(f < l * c->quick_kill[0])) return left; /* kills nothing (or not finite) */
+    int reach = 0; /* quick_kill decreases: the bins killed are contiguous */
+    while (reach < c->quick_reach && f < l * c->quick_kill[reach + 1])
+        reach++;
+    long nb = (long)c->bins, home = (long)bin_of(c, gamma3_quick_angle(x1, x2));
+    for (long d = -reach; d <= reach; d++) {
+        long kk = home + d;
+        size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
+        left -= !c->dead[k];
+        c->dead[k] = 1;
+    }
+    return left;
+}
+
+/* The quick drop test (docs/gamma.md, "Quick drop test"): the points of the 27 grid cells
+ * around m's cell (rings 0 and 1, read straight from the grid in the order of quick_cells)
+ * kill the bins within their kill arc (quick_kill: the arc of block_point shortened by
+ * G3_QUICK_ERR). Only the kills are tracked, no limits and no square roots of thresholds.
+ * Returns 1 when every bin is killed: then every azimuth around ab lies within the kill arc of
+ * some point q (the arc bounds the true angle to q, the error of q's angle included), so q lies
+ * in the lens of every triangle abc with ab shortest (the lens test above) and no triangle with
+ * shortest edge ab is accepted. 0 when not shown (the pair goes to scan_edge). */
 static int quick_drop(g3_ctx *c, const g3_edge *E)
 {
+    const graph_grid *g = c->grid;
     double l2 = 0.25 * E->len2, l = sqrt(l2);
-    long nb = (long)c->bins;
     size_t left = c->bins;
     memset(c->dead, 0, c->bins);
-    c->seen.count = 0;
-    for (size_t r = 0; r <= G3_QUICK_RINGS; r++) {
-        int beyond = 0;
-        size_t first = c->seen.count;
-        if (graph_grid_ring(c->grid, E->m, r, &c->seen, &beyond) < 0) return -1;
-        if (beyond) return 0;
-        const uint32_t *items = c->seen.data;
-        size_t count = c->seen.count - first;
-        for (size_t j = 0; j < count; j++) {
-            uint32_t q = items[first + ((j & 1) ? count - 1 - j / 2 : j / 2)];
-            double x1, x2, d2, rq;
-            if (q == E->a || q == E->b ||
-                !axis_plane(E, c->xyz + 3 * (size_t)q, &x1, &x2, &d2, &rq))
-                continue;
-            double f = apex_height(d2, rq, l2);
-            if (!(f < l * c->quick_kill[0])) continue; /* kills nothing (or not finite) */
-            int reach = 0; /* quick_kill decreases: the bins killed are contiguous */
-            while (reach < c->quick_reach && f < l * c->quick_kill[reach + 1])
-                reach++;
-            long home = (long)bin_of(c, gamma3_quick_angle(x1, x2));
-            for (long d = -reach; d <= reach; d++) {
-                long kk = home + d;
-                size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
-                left -= !c->dead[k];
-                c->dead[k] = 1;
-            }
+    long home[3], res[3];
+    for (int a = 0; a < 3; a++) {
+        res[a] = (long)g->res[a];
+        double x = floor((E->m[a] - g->lo[a]) / g->cell);
+        home[a] = !(x >= 0) ? 0 : x >= (double)res[a] ? res[a] - 1 : (long)x;
+    }
+    for (int j = 0; j < 27; j++) {
+        long x = home[0] + quick_cells[j][0], y = home[1] + quick_cells[j][1],
+             z = home[2] + quick_cells[j][2];
+        if (x < 0 || y < 0 || z < 0 || x >= res[0] || y >= res[1] || z >= res[2]) continue;
+        size_t cell = ((size_t)z * g->res[1] + (size_t)y) * g->res[0] + (size_t)x;
+        for (size_t i = g->start[cell]; i < g->start[cell + 1]; i++) {
+            if (c->stats) c->stats->quick_visits++;
+            left = quick_point(c, E, g->items[i], l, l2, left);
             if (left == 0) return 1;
         }
     }
     return 0;
 }
 
+/* One point seen by scan_edge: lowers the bin limits; returns 1 when every bin is dead. */
+static int see_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l2)
+{
+    if (q == E->a || q == E->b) return 0;
+    double d2, rq, angle = axis_coords(E, c->xyz + 3 * (size_t)q, &d2, &rq);
+    if (isnan(angle)) return 0;
+    double f = apex_height(d2, rq, l2);
+    if (isfinite(f)) block_point(c, angle, f, l, l2);
+    return c->dead_count == c->bins;
+}
+
+/* Can a point of the box [lo, hi] still be an admissible third vertex of E? (docs/gamma.md,
+ * "The far part of the scan".) An admissible c has |c-m| >= sqrt(3) l (ab is shortest) and
+ * h_c >= g(|c-m|), g(d) = (d^2 - l^2) / (2d) increasing, so every c of the box has
+ * h_c >= G = g(max(box distance, sqrt(3) l)); c is blocked when h_c exceeds the limit of its
+ * bin. The box's bins are those of the azimuth range of its points (centre angle +- asin(r/rho)
+ * from the box's circumscribed ball), or all bins when the box comes near the axis (where
+ * third_vertex_ok keeps points without an angle). Keeps the box whenever in doubt. */
+static int box_needed(const g3_ctx *c, const g3_edge *E, const gamma3_kd_node *nd, double l,
+                      double l2)
+{
+    double v[3], dist2 = 0;
+    for (int k = 0; k < 3; k++) {
+        double gap = fmax(fmax(nd->lo[k] - E->m[k], E->m[k] - nd->hi[k]), 0);
+        dist2 += gap * gap;
+        v[k] = 0.5 * (nd->lo[k] + nd->hi[k]) - E->m[k];
+    }
+    double d = fmax(sqrt(dist2), sqrt(3.0) * l * (1 - 1e-9)) * (1 - 1e-7);
+    double G = (d * d - l2) / (2 * d);
+    if (!(G > 0)) return 1;
+    double x1 = dot3(v, E->u1), x2 = dot3(v, E->u2), rho = sqrt(x1 * x1 + x2 * x2);
+    double delta = nd->r * (1 + 1e-12), vlen = sqrt(dot3(v, v));
+    long nb = (long)c->bins, k0 = 0, k1 = nb - 1;
+    if (rho - delta > 1e-5 * (vlen + delta)) {
+        double theta = atan2(x2, x1), hw = asin(delta / rho) + 1e-7;
+        k0 = (long)floor((theta - hw + G3_PI) / c->width) - 1;
+        k1 = (long)floor((theta + hw + G3_PI) / c->width) + 1;
+        if (!(k0 >= -nb && k1 <= 2 * nb && k1 - k0 < nb)) k0 = 0, k1 = nb - 1;
+    }
+    for (long kk = k0; kk <= k1; kk++) {
+        size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
+        double H = c->limit[k];
+        if (!c->dead[k] && !(G > H + 1e-9 * (fabs(H) + l))) return 1;
+    }
+    return 0;
+}
+
+/* The far part of scan_edge: after the rings 0..r_done (every point closer to m than
+ * r_done * cell is in seen, stamped), the kd-tree is walked nearest child first, skipping the
+ * boxes that box_needed proves to hold no admissible third vertex under the current limits
+ * (which only decrease). Returns 1 when the edge is dead, 0 when the points seen hold every
+ * admissible third vertex, -1 out of memory. */
+static int kd_scan(g3_ctx *c, const g3_edge *E, size_t r_done, double l, double l2,
+                   double h_min)
+{
+    const uint32_t *items = c->seen.data;
+    for (size_t i = 0; i < c->seen.count; i++)
+        c->stamp[items[i]] = c->pair_stamp;
+    double inner = (double)r_done * c->grid->cell * (1 - 1e-9);
+    const gamma3_kd_node *nodes = c->kd.nodes;
+    c->stack.count = 0;
+    uint32_t root = 0;
+    if (fl_vec_push(&c->stack, &root, 1)) return -1;
+    while (c->stack.count) {
+        uint32_t id = ((uint32_t *)c->stack.data)[--c->stack.count];
+        const gamma3_kd_node *nd = &nodes[id];
+        double far2 = 0; /* the box's farthest distance from m: inside the rings when small */
+        for (int k = 0; k < 3; k++) {
+            double w = fmax(fabs(nd->lo[k] - E->m[k]), fabs(nd->hi[k] - E->m[k]));
+            far2 += w * w;
+        }
+        if (sqrt(far2) < inner || !box_needed(c, E, nd, l, l2)) continue;
+        if (nd->child) {
+            /* Push the farther child first, so that the nearer one is walked first. */
+            uint32_t ch[2] = {nd->child, nd->child + 1};
+            double dc[2];
+            for (int j = 0; j < 2; j++) {
+                const gamma3_kd_node *x = &nodes[ch[j]];
+                double v[3] = {0.5 * (x->lo[0] + x->hi[0]) - E->m[0],
+                               0.5 * (x->lo[1] + x->hi[1]) - E->m[1],
+                               0.5 * (x->lo[2] + x->hi[2]) - E->m[2]};
+                dc[j] = dot3(v, v);
+            }
+            uint32_t order[2] = {dc[0] > dc[1] ? ch[0] : ch[1], dc[0] > dc[1] ? ch[1] : ch[0]};
+            if (fl_vec_push(&c->stack, order, 2)) return -1;
+            continue;
+        }
+        for (uint32_t i = nd->begin; i < nd->end; i++) {
+            uint32_t q = c->kd.perm[i];
+            if (c->stamp[q] == c->pair_stamp) continue;
+            c->stamp[q] = c->pair_stamp;
+            if (fl_vec_push(&c->seen, &q, 1)) return -1;
+            if (see_point(c, E, q, l, l2)) return 1;
+        }
+        if (max_limit(c) < h_min) return 1;
+    }
+    return 0;
+}
+
 /* Scans rings around m, lowering the bin limits, until the edge is dead (returns 1) or every
  * admissible third vertex has been seen (returns 0; the points are in c->seen); -1 out of
- * memory. */
+ * memory. Beyond ring G3_KD_AFTER the kd-tree walk kd_scan takes over (not when plain). */
 static int scan_edge(g3_ctx *c, const g3_edge *E)
 {
     double l2 = 0.25 * E->len2, l = sqrt(l2);
@@ -246,20 +367,20 @@ static int scan_edge(g3_ctx *c, const g3_edge *E)
         if (graph_grid_ring(c->grid, E->m, r, &c->seen, &beyond) < 0) return -1;
         if (beyond) return 0;
         const uint32_t *items = c->seen.data;
-        for (size_t i = first; i < c->seen.count; i++) {
-            uint32_t q = items[i];
-            if (q == E->a || q == E->b) continue;
-            double d2, rq, angle = axis_coords(E, c->xyz + 3 * (size_t)q, &d2, &rq);
-            if (isnan(angle)) continue;
-            double f = apex_height(d2, rq, l2);
-            if (isfinite(f)) block_point(c, angle, f, l, l2);
-            if (c->dead_count == c->bins) return 1; /* typically within the first ring */
-        }
-        if (c->dead_count == c->bins) return 1;
+        for (size_t i = first; i < c->seen.count; i++)
+            if (see_point(c, E, items[i], l, l2)) return 1; /* typically within the first ring */
         double H = max_limit(c);
         if (H < h_min) return 1;
         double need = H + sqrt(H * H + l2);
         if ((double)r * c->grid->cell >= need * (1 + 1e-7)) return 0;
+        if (!c->plain && r >= G3_KD_AFTER) {
+            if (++c->pair_stamp == 0) { /* wrapped: no stale stamp may match */
+                memset(c->stamp, 0, c->n * sizeof *c->stamp);
+                c->pair_stamp = 1;
+            }
+            if (c->stats) c->stats->kd_walks++;
+            return kd_scan(c, E, r, l, l2, h_min);
+        }
     }
 }
 
@@ -301,9 +422,7 @@ static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
         return 0;
     }
     if (!c->plain) {
-        int q = quick_drop(c, &E);
-        if (q < 0) return -1;
-        if (q) {
+        if (quick_drop(c, &E)) {
             if (c->stats) c->stats->quick_dropped++;
             return 0;
         }
@@ -313,13 +432,15 @@ static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
     if (c->stats) {
         if (r) c->stats->scan_dropped++;
         else c->stats->scan_kept++;
+        c->stats->scan_visits += c->seen.count;
     }
     if (r) return 0;
     const uint32_t *items = c->seen.data;
     for (size_t i = 0; i < c->seen.count; i++) {
         uint32_t q = items[i];
-        if (q != a && q != b && third_vertex_ok(c, &E, q) && sort3_check(c, a, b, q, out) < 0)
-            return -1;
+        if (q == a || q == b || !third_vertex_ok(c, &E, q)) continue;
+        if (c->stats) c->stats->candidates++;
+        if (sort3_check(c, a, b, q, out) < 0) return -1;
     }
     return 0;
 }
@@ -404,6 +525,16 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     }
     fl_vec_init(&c.seen, sizeof(uint32_t));
     fl_vec_init(&c.scan, sizeof(uint32_t));
+    fl_vec_init(&c.stack, sizeof(uint32_t));
+    if (!c.plain && c.n > 1) {
+        c.stamp = calloc(c.n, sizeof *c.stamp);
+        if (!c.stamp || gamma3_kdtree_build(&c.kd, c.xyz, c.n) < 0) {
+            free(c.stamp);
+            free(c.limit);
+            free(c.dead);
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+        }
+    }
     fl_status st = FL_OK;
     if (pairs & GAMMA3_CELL_PAIRS) {
         g3_run run = {&c, b, progress, user, 0, c.n * (c.n - 1) / 2};
@@ -425,6 +556,9 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     }
     fl_vec_free(&c.seen);
     fl_vec_free(&c.scan);
+    fl_vec_free(&c.stack);
+    gamma3_kdtree_free(&c.kd);
+    free(c.stamp);
     free(c.limit);
     free(c.dead);
     return st;

@@ -26,8 +26,12 @@ typedef struct gamma3_stats {
     size_t cert_tries, cert_ok;
     size_t cert_visits;     /* points looked at by the certificates */
     size_t quick_dropped;   /* pairs dropped by the quick drop test */
+    size_t quick_visits;    /* points the quick drop test looked at */
     size_t scan_dropped;    /* pairs dropped by the ring scan */
     size_t scan_kept;       /* pairs whose candidates went to the exact check */
+    size_t scan_visits;     /* points the ring scan saw (dropped and kept pairs) */
+    size_t kd_walks;        /* pairs whose scan went on in the kd-tree (kd_scan) */
+    size_t candidates;      /* triangles handed to the exact check */
 } gamma3_stats;
 
 /* gamma3_edge_triangles with an explicit pair strategy; stats may be NULL. */
@@ -41,6 +45,25 @@ double gamma3_quick_angle(double x, double y);
 
 /* An orthonormal frame (e, u1, u2) around the unit vector e (shared by both halves). */
 void gamma3_frame(const double *e, double *u1, double *u2);
+
+/* A kd-tree of the points (gamma3_cells.c): median splits of the longest box side, leaves of at
+ * most 8 points; node 0 is the root, a node's children are child and child + 1 (child = 0 for a
+ * leaf), its points perm[begin .. end-1] lie in the box [lo, hi] of half-diagonal r. */
+typedef struct gamma3_kd_node {
+    double lo[3], hi[3], r;
+    uint32_t begin, end, child;
+} gamma3_kd_node;
+
+typedef struct gamma3_kdtree {
+    const double *xyz;
+    uint32_t *perm;
+    gamma3_kd_node *nodes;
+    size_t count;
+} gamma3_kdtree;
+
+/* Builds the tree of the n finite points xyz (kept by reference); 0, or -1 out of memory. */
+int gamma3_kdtree_build(gamma3_kdtree *t, const double *xyz, size_t n);
+void gamma3_kdtree_free(gamma3_kdtree *t);
 
 /* Per-pair callback of the recursion: 0 to go on, -1 out of memory. */
 typedef int (*gamma3_pair_fn)(void *ctx, uint32_t a, uint32_t b);

@@ -185,31 +185,24 @@ int gamma3_cell_certify(const graph_grid *grid, double s, const double *loA, con
 
 /* ---- the kd-tree and the dual-tree recursion ---- */
 
-typedef struct g3c_node {
-    double lo[3], hi[3], r; /* box and half-diagonal */
-    uint32_t begin, end;    /* points perm[begin .. end-1] */
-    uint32_t child;         /* children child, child + 1; 0 for a leaf */
-} g3c_node;
+typedef gamma3_kd_node g3c_node;
 
 typedef struct g3c_tree {
     const graph_grid *grid;
-    const double *xyz;
     double s;
-    uint32_t *perm;
-    g3c_node *nodes;
-    size_t count, cap;
+    gamma3_kdtree kd;
     gamma3_pair_fn fn;
     void *ctx;
     gamma3_stats *stats;
 } g3c_tree;
 
-static double coord(const g3c_tree *t, uint32_t i, int axis)
+static double coord(const gamma3_kdtree *t, uint32_t i, int axis)
 {
     return t->xyz[3 * (size_t)i + (size_t)axis];
 }
 
 /* Quickselect: perm[begin..end-1] partitioned around position k along axis. */
-static void select_k(g3c_tree *t, uint32_t begin, uint32_t end, uint32_t k, int axis)
+static void select_k(gamma3_kdtree *t, uint32_t begin, uint32_t end, uint32_t k, int axis)
 {
     uint32_t *p = t->perm;
     while (end - begin > 1) {
@@ -235,9 +228,9 @@ static void select_k(g3c_tree *t, uint32_t begin, uint32_t end, uint32_t k, int 
 
 /* Builds the subtree of node id over perm[begin..end-1]. The points are finite (checked by
  * graph_check_points), so the comparisons above are total. */
-static void build(g3c_tree *t, size_t id, uint32_t begin, uint32_t end)
+static void build(gamma3_kdtree *t, size_t id, uint32_t begin, uint32_t end)
 {
-    g3c_node *nd = &t->nodes[id];
+    gamma3_kd_node *nd = &t->nodes[id];
     nd->begin = begin;
     nd->end = end;
     nd->child = 0;
@@ -269,12 +262,41 @@ static void build(g3c_tree *t, size_t id, uint32_t begin, uint32_t end)
     build(t, c + 1, mid, end);
 }
 
+int gamma3_kdtree_build(gamma3_kdtree *t, const double *xyz, size_t n)
+{
+    memset(t, 0, sizeof *t);
+    t->xyz = xyz;
+    if (n == 0 || n > UINT32_MAX) return n ? -1 : 0;
+    /* A median split gives at most 2 n / (G3C_LEAF / 2) + 1 nodes. */
+    size_t cap = 2 * (n / (G3C_LEAF / 2) + 1) + 1;
+    t->perm = fl_alloc_array(n, sizeof *t->perm);
+    t->nodes = fl_alloc_array(cap, sizeof *t->nodes);
+    if (!t->perm || !t->nodes) {
+        gamma3_kdtree_free(t);
+        return -1;
+    }
+    for (size_t i = 0; i < n; i++)
+        t->perm[i] = (uint32_t)i;
+    t->count = 1;
+    build(t, 0, 0, (uint32_t)n);
+    return 0;
+}
+
+void gamma3_kdtree_free(gamma3_kdtree *t)
+{
+    free(t->perm);
+    free(t->nodes);
+    t->perm = NULL;
+    t->nodes = NULL;
+    t->count = 0;
+}
+
 static int leaf_pairs(g3c_tree *t, const g3c_node *A, const g3c_node *B)
 {
     for (uint32_t i = A->begin; i < A->end; i++)
         for (uint32_t j = A == B ? i + 1 : B->begin; j < B->end; j++) {
             t->stats->pairs_scanned++;
-            int r = t->fn(t->ctx, t->perm[i], t->perm[j]);
+            int r = t->fn(t->ctx, t->kd.perm[i], t->kd.perm[j]);
             if (r < 0) return r;
         }
     return 0;
@@ -303,7 +325,7 @@ static int try_certificate(g3c_tree *t, const g3c_node *A, const g3c_node *B)
 /* Every pair of A x B (A != B) or of A (A == B), through the certificate where it holds. */
 static int visit(g3c_tree *t, size_t a, size_t b)
 {
-    const g3c_node *A = &t->nodes[a], *B = &t->nodes[b];
+    const g3c_node *A = &t->kd.nodes[a], *B = &t->kd.nodes[b];
     if (a == b) {
         if (!A->child) return leaf_pairs(t, A, A);
         size_t c = A->child;
@@ -329,29 +351,15 @@ fl_status gamma3_cell_pairs(const graph_grid *grid, double s, gamma3_pair_fn fn,
     gamma3_stats local;
     memset(&local, 0, sizeof local);
     t.grid = grid;
-    t.xyz = grid->coords;
     t.s = s;
     t.fn = fn;
     t.ctx = ctx;
     t.stats = stats ? stats : &local;
-    size_t n = grid->n;
-    if (n < 2) return FL_OK;
-    /* A median split gives at most 2 n / (G3C_LEAF / 2) + 1 nodes. */
-    t.cap = 2 * (n / (G3C_LEAF / 2) + 1) + 1;
-    t.perm = fl_alloc_array(n, sizeof *t.perm);
-    t.nodes = fl_alloc_array(t.cap, sizeof *t.nodes);
-    if (!t.perm || !t.nodes) {
-        free(t.perm);
-        free(t.nodes);
+    if (grid->n < 2) return FL_OK;
+    if (gamma3_kdtree_build(&t.kd, grid->coords, grid->n) < 0)
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
-    }
-    for (size_t i = 0; i < n; i++)
-        t.perm[i] = (uint32_t)i;
-    t.count = 1;
-    build(&t, 0, 0, (uint32_t)n);
     int r = visit(&t, 0, 0);
-    free(t.perm);
-    free(t.nodes);
+    gamma3_kdtree_free(&t.kd);
     if (r == -1) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     if (r < 0) return fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
     return FL_OK;

@@ -31,6 +31,8 @@
 #define G3_PI 3.14159265358979323846
 #define G3_BINS_PER_ARC 8 /* bins per blocking half-arc atan(1/s) */
 #define G3_MAX_REACH 8
+#define G3_KD_AFTER 1       /* scan_edge goes from rings to the kd-tree after this ring */
+#define G3_QUICK_ERR 1e-5   /* bound on the error of gamma3_quick_angle (radians), see there */
 
 typedef struct g3_ctx {
     const graph_grid *grid;
@@ -44,6 +46,14 @@ typedef struct g3_ctx {
     int reach;        /* bins a point can block on each side of its own */
     double ca[G3_MAX_REACH + 1], cb[G3_MAX_REACH + 1]; /* cos, s sin of the worst angle */
     double kill[G3_MAX_REACH + 1]; /* f/l below which a point's threshold is under l/sqrt(3) */
+    int quick_reach;  /* the same for the quick drop test, whose angles err by G3_QUICK_ERR */
+    double quick_kill[G3_MAX_REACH + 1];
+    int plain;        /* 1: the per-pair scan alone (no quick drop test), for the tests */
+    gamma3_kdtree kd; /* the far part of scan_edge (kd_scan); empty when plain */
+    uint32_t *stamp;  /* stamp[q] == pair_stamp: q is already in seen */
+    uint32_t pair_stamp;
+    fl_vec stack;     /* kd_scan's node stack */
+    gamma3_stats *stats;
     double *limit;    /* H[j] of the current edge */
     unsigned char *dead; /* bins whose limit is below l/sqrt(3) (no third vertex there) */
     size_t dead_count;
@@ -82,17 +92,27 @@ static int edge_init(g3_edge *E, const double *xyz, uint32_t a, uint32_t b)
     return 1;
 }
 
-/* The cylindrical coordinates of p around the edge: returns the angle in [-pi, pi], or NAN when
- * it is ill-conditioned (p within 1e-6 |p - m| of the axis, or not finite); *dist2 = |p - m|^2,
- * *radius = the distance from the axis. */
-static double axis_coords(const g3_edge *E, const double *p, double *dist2, double *radius)
+/* The components of p - m normal to the edge, (x1, x2) in the frame (u1, u2); returns 0 when
+ * the angle is ill-conditioned (p within 1e-6 |p - m| of the axis, or not finite). *dist2 =
+ * |p - m|^2, *radius = the distance from the axis. */
+static int axis_plane(const g3_edge *E, const double *p, double *x1, double *x2, double *dist2,
+                      double *radius)
 {
     double d[3] = {p[0] - E->m[0], p[1] - E->m[1], p[2] - E->m[2]};
-    double x1 = dot3(d, E->u1), x2 = dot3(d, E->u2);
+    *x1 = dot3(d, E->u1);
+    *x2 = dot3(d, E->u2);
     *dist2 = dot3(d, d);
-    double r2 = x1 * x1 + x2 * x2;
+    double r2 = *x1 * *x1 + *x2 * *x2;
     *radius = sqrt(r2);
-    if (!(r2 > 1e-12 * *dist2) || !isfinite(r2)) return NAN;
+    return r2 > 1e-12 * *dist2 && isfinite(r2);
+}
+
+/* The cylindrical coordinates of p around the edge: returns the angle in [-pi, pi], or NAN when
+ * it is ill-conditioned (see axis_plane). */
+static double axis_coords(const g3_edge *E, const double *p, double *dist2, double *radius)
+{
+    double x1, x2;
+    if (!axis_plane(E, p, &x1, &x2, dist2, radius)) return NAN;
     return atan2(x2, x1);
 }
 
@@ -149,9 +169,189 @@ static double max_limit(const g3_ctx *c)
     return isnan(h) ? INFINITY : h;
 }
 
+/* atan2(y, x) for finite (x, y) != (0, 0), within G3_QUICK_ERR: a minimax polynomial for atan on
+ * [0, 1] (error below 1.7e-6 rad, checked densely by tests/graphs/test_gamma3_quick.c) and the
+ * octant symmetries. Only the quick drop test uses it; its kill arcs are shortened by
+ * G3_QUICK_ERR, so the error cannot make it drop a pair the exact arcs would not. */
+double gamma3_quick_angle(double x, double y)
+{
+    double ax = fabs(x), ay = fabs(y), mx = fmax(ax, ay), mn = fmin(ax, ay);
+    double a = mn / mx, s = a * a;
+    double r = a * (0.99997726 +
+                    s * (-0.33262347 +
+                         s * (0.19354346 + s * (-0.11643287 + s * (0.05265332 + s * -0.01172120)))));
+    if (ay > ax) r = 0.5 * G3_PI - r;
+    if (x < 0) r = G3_PI - r;
+    return y < 0 ? -r : r;
+}
+
+/* The 27 cells of rings 0 and 1: the home cell, then each neighbour followed by the opposite
+ * one, so that the azimuths around the edge spread fast. */
+static const signed char quick_cells[27][3] = {
+    {0, 0, 0},   {1, 0, 0},   {-1, 0, 0},  {0, 1, 0},   {0, -1, 0}, {0, 0, 1},   {0, 0, -1},
+    {1, 1, 1},   {-1, -1, -1}, {1, -1, 1}, {-1, 1, -1}, {1, 1, -1}, {-1, -1, 1}, {1, -1, -1},
+    {-1, 1, 1},  {1, 1, 0},   {-1, -1, 0}, {1, -1, 0},  {-1, 1, 0}, {1, 0, 1},   {-1, 0, -1},
+    {1, 0, -1},  {-1, 0, 1},  {0, 1, 1},   {0, -1, -1}, {0, 1, -1}, {0, -1, 1}};
+
+/* One point of the quick drop test: kills the bins within its kill arc; returns the number of
+ * bins still alive. */
+static size_t quick_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l2,
+                          size_t left)
+{
+    double x1, x2, d2, rq;
+    if (q == E->a || q == E->b || !axis_plane(E, c->xyz + 3 * (size_t)q, &x1, &x2, &d2, &rq))
+        return left;
+    double f = apex_height(d2, rq, l2);
+    if (!(f < l * c->quick_kill[0])) return left; /* kills nothing (or not finite) */
+    int reach = 0; /* quick_kill decreases: the bins killed are contiguous */
+    while (reach < c->quick_reach && f < l * c->quick_kill[reach + 1])
+        reach++;
+    long nb = (long)c->bins, home = (long)bin_of(c, gamma3_quick_angle(x1, x2));
+    for (long d = -reach; d <= reach; d++) {
+        long kk = home + d;
+        size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
+        left -= !c->dead[k];
+        c->dead[k] = 1;
+    }
+    return left;
+}
+
+/* The quick drop test (docs/gamma.md, "Quick drop test"): the points of the 27 grid cells
+ * around m's cell (rings 0 and 1, read straight from the grid in the order of quick_cells)
+ * kill the bins within their kill arc (quick_kill: the arc of block_point shortened by
+ * G3_QUICK_ERR). Only the kills are tracked, no limits and no square roots of thresholds.
+ * Returns 1 when every bin is killed: then every azimuth around ab lies within the kill arc of
+ * some point q (the arc bounds the true angle to q, the error of q's angle included), so q lies
+ * in the lens of every triangle abc with ab shortest (the lens test above) and no triangle with
+ * shortest edge ab is accepted. 0 when not shown (the pair goes to scan_edge). */
+static int quick_drop(g3_ctx *c, const g3_edge *E)
+{
+    const graph_grid *g = c->grid;
+    double l2 = 0.25 * E->len2, l = sqrt(l2);
+    size_t left = c->bins;
+    memset(c->dead, 0, c->bins);
+    long home[3], res[3];
+    for (int a = 0; a < 3; a++) {
+        res[a] = (long)g->res[a];
+        double x = floor((E->m[a] - g->lo[a]) / g->cell);
+        home[a] = !(x >= 0) ? 0 : x >= (double)res[a] ? res[a] - 1 : (long)x;
+    }
+    for (int j = 0; j < 27; j++) {
+        long x = home[0] + quick_cells[j][0], y = home[1] + quick_cells[j][1],
+             z = home[2] + quick_cells[j][2];
+        if (x < 0 || y < 0 || z < 0 || x >= res[0] || y >= res[1] || z >= res[2]) continue;
+        size_t cell = ((size_t)z * g->res[1] + (size_t)y) * g->res[0] + (size_t)x;
+        for (size_t i = g->start[cell]; i < g->start[cell + 1]; i++) {
+            if (c->stats) c->stats->quick_visits++;
+            left = quick_point(c, E, g->items[i], l, l2, left);
+            if (left == 0) return 1;
+        }
+    }
+    return 0;
+}
+
+/* One point seen by scan_edge: lowers the bin limits; returns 1 when every bin is dead. */
+static int see_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l2)
+{
+    if (q == E->a || q == E->b) return 0;
+    double d2, rq, angle = axis_coords(E, c->xyz + 3 * (size_t)q, &d2, &rq);
+    if (isnan(angle)) return 0;
+    double f = apex_height(d2, rq, l2);
+    if (isfinite(f)) block_point(c, angle, f, l, l2);
+    return c->dead_count == c->bins;
+}
+
+/* Can a point of the box [lo, hi] still be an admissible third vertex of E? (docs/gamma.md,
+ * "The far part of the scan".) An admissible c has |c-m| >= sqrt(3) l (ab is shortest) and
+ * h_c >= g(|c-m|), g(d) = (d^2 - l^2) / (2d) increasing, so every c of the box has
+ * h_c >= G = g(max(box distance, sqrt(3) l)); c is blocked when h_c exceeds the limit of its
+ * bin. The box's bins are those of the azimuth range of its points (centre angle +- asin(r/rho)
+ * from the box's circumscribed ball), or all bins when the box comes near the axis (where
+ * third_vertex_ok keeps points without an angle). Keeps the box whenever in doubt. */
+static int box_needed(const g3_ctx *c, const g3_edge *E, const gamma3_kd_node *nd, double l,
+                      double l2)
+{
+    double v[3], dist2 = 0;
+    for (int k = 0; k < 3; k++) {
+        double gap = fmax(fmax(nd->lo[k] - E->m[k], E->m[k] - nd->hi[k]), 0);
+        dist2 += gap * gap;
+        v[k] = 0.5 * (nd->lo[k] + nd->hi[k]) - E->m[k];
+    }
+    double d = fmax(sqrt(dist2), sqrt(3.0) * l * (1 - 1e-9)) * (1 - 1e-7);
+    double G = (d * d - l2) / (2 * d);
+    if (!(G > 0)) return 1;
+    double x1 = dot3(v, E->u1), x2 = dot3(v, E->u2), rho = sqrt(x1 * x1 + x2 * x2);
+    double delta = nd->r * (1 + 1e-12), vlen = sqrt(dot3(v, v));
+    long nb = (long)c->bins, k0 = 0, k1 = nb - 1;
+    if (rho - delta > 1e-5 * (vlen + delta)) {
+        double theta = atan2(x2, x1), hw = asin(delta / rho) + 1e-7;
+        k0 = (long)floor((theta - hw + G3_PI) / c->width) - 1;
+        k1 = (long)floor((theta + hw + G3_PI) / c->width) + 1;
+        if (!(k0 >= -nb && k1 <= 2 * nb && k1 - k0 < nb)) k0 = 0, k1 = nb - 1;
+    }
+    for (long kk = k0; kk <= k1; kk++) {
+        size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
+        double H = c->limit[k];
+        if (!c->dead[k] && !(G > H + 1e-9 * (fabs(H) + l))) return 1;
+    }
+    return 0;
+}
+
+/* The far part of scan_edge: after the rings 0..r_done (every point closer to m than
+ * r_done * cell is in seen, stamped), the kd-tree is walked nearest child first, skipping the
+ * boxes that box_needed proves to hold no admissible third vertex under the current limits
+ * (which only decrease). Returns 1 when the edge is dead, 0 when the points seen hold every
+ * admissible third vertex, -1 out of memory. */
+static int kd_scan(g3_ctx *c, const g3_edge *E, size_t r_done, double l, double l2,
+                   double h_min)
+{
+    const uint32_t *items = c->seen.data;
+    for (size_t i = 0; i < c->seen.count; i++)
+        c->stamp[items[i]] = c->pair_stamp;
+    double inner = (double)r_done * c->grid->cell * (1 - 1e-9);
+    const gamma3_kd_node *nodes = c->kd.nodes;
+    c->stack.count = 0;
+    uint32_t root = 0;
+    if (fl_vec_push(&c->stack, &root, 1)) return -1;
+    while (c->stack.count) {
+        uint32_t id = ((uint32_t *)c->stack.data)[--c->stack.count];
+        const gamma3_kd_node *nd = &nodes[id];
+        double far2 = 0; /* the box's farthest distance from m: inside the rings when small */
+        for (int k = 0; k < 3; k++) {
+            double w = fmax(fabs(nd->lo[k] - E->m[k]), fabs(nd->hi[k] - E->m[k]));
+            far2 += w * w;
+        }
+        if (sqrt(far2) < inner || !box_needed(c, E, nd, l, l2)) continue;
+        if (nd->child) {
+            /* Push the farther child first, so that the nearer one is walked first. */
+            uint32_t ch[2] = {nd->child, nd->child + 1};
+            double dc[2];
+            for (int j = 0; j < 2; j++) {
+                const gamma3_kd_node *x = &nodes[ch[j]];
+                double v[3] = {0.5 * (x->lo[0] + x->hi[0]) - E->m[0],
+                               0.5 * (x->lo[1] + x->hi[1]) - E->m[1],
+                               0.5 * (x->lo[2] + x->hi[2]) - E->m[2]};
+                dc[j] = dot3(v, v);
+            }
+            uint32_t order[2] = {dc[0] > dc[1] ? ch[0] : ch[1], dc[0] > dc[1] ? ch[1] : ch[0]};
+            if (fl_vec_push(&c->stack, order, 2)) return -1;
+            continue;
+        }
+        for (uint32_t i = nd->begin; i < nd->end; i++) {
+            uint32_t q = c->kd.perm[i];
+            if (c->stamp[q] == c->pair_stamp) continue;
+            c->stamp[q] = c->pair_stamp;
+            if (fl_vec_push(&c->seen, &q, 1)) return -1;
+            if (see_point(c, E, q, l, l2)) return 1;
+        }
+        if (max_limit(c) < h_min) return 1;
+    }
+    return 0;
+}
+
 /* Scans rings around m, lowering the bin limits, until the edge is dead (returns 1) or every
  * admissible third vertex has been seen (returns 0; the points are in c->seen); -1 out of
- * memory. */
+ * memory. Beyond ring G3_KD_AFTER the kd-tree walk kd_scan takes over (not when plain). */
 static int scan_edge(g3_ctx *c, const g3_edge *E)
 {
     double l2 = 0.25 * E->len2, l = sqrt(l2);
@@ -167,20 +367,20 @@ static int scan_edge(g3_ctx *c, const g3_edge *E)
         if (graph_grid_ring(c->grid, E->m, r, &c->seen, &beyond) < 0) return -1;
         if (beyond) return 0;
         const uint32_t *items = c->seen.data;
-        for (size_t i = first; i < c->seen.count; i++) {
-            uint32_t q = items[i];
-            if (q == E->a || q == E->b) continue;
-            double d2, rq, angle = axis_coords(E, c->xyz + 3 * (size_t)q, &d2, &rq);
-            if (isnan(angle)) continue;
-            double f = apex_height(d2, rq, l2);
-            if (isfinite(f)) block_point(c, angle, f, l, l2);
-            if (c->dead_count == c->bins) return 1; /* typically within the first ring */
-        }
-        if (c->dead_count == c->bins) return 1;
+        for (size_t i = first; i < c->seen.count; i++)
+            if (see_point(c, E, items[i], l, l2)) return 1; /* typically within the first ring */
         double H = max_limit(c);
         if (H < h_min) return 1;
         double need = H + sqrt(H * H + l2);
         if ((double)r * c->grid->cell >= need * (1 + 1e-7)) return 0;
+        if (!c->plain && r >= G3_KD_AFTER) {
+            if (++c->pair_stamp == 0) { /* wrapped: no stale stamp may match */
+                memset(c->stamp, 0, c->n * sizeof *c->stamp);
+                c->pair_stamp = 1;
+            }
+            if (c->stats) c->stats->kd_walks++;
+            return kd_scan(c, E, r, l, l2, h_min);
+        }
     }
 }
 
@@ -221,13 +421,26 @@ static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
             if (q != a && q != b && sort3_check(c, a, b, q, out) < 0) return -1;
         return 0;
     }
+    if (!c->plain) {
+        if (quick_drop(c, &E)) {
+            if (c->stats) c->stats->quick_dropped++;
+            return 0;
+        }
+    }
     int r = scan_edge(c, &E);
-    if (r) return r < 0 ? -1 : 0;
+    if (r < 0) return -1;
+    if (c->stats) {
+        if (r) c->stats->scan_dropped++;
+        else c->stats->scan_kept++;
+        c->stats->scan_visits += c->seen.count;
+    }
+    if (r) return 0;
     const uint32_t *items = c->seen.data;
     for (size_t i = 0; i < c->seen.count; i++) {
         uint32_t q = items[i];
-        if (q != a && q != b && third_vertex_ok(c, &E, q) && sort3_check(c, a, b, q, out) < 0)
-            return -1;
+        if (q == a || q == b || !third_vertex_ok(c, &E, q)) continue;
+        if (c->stats) c->stats->candidates++;
+        if (sort3_check(c, a, b, q, out) < 0) return -1;
     }
     return 0;
 }
@@ -249,6 +462,27 @@ static int run_pair(void *user, uint32_t a, uint32_t b)
                     fmin(1.0, (double)run->done / (double)run->total)))
         return -2;
     return edge_triangles(run->c, a, b, run->out);
+}
+
+/* For a point in bin i and a third vertex in bin i + d (|d| <= reach, the return value), the
+ * angle between them is at most (d+1) widths, plus `err` for an inexact angle of the point:
+ * kill[d] is f/l below which the point's threshold there is under l/sqrt(3) (with a margin for
+ * the rounding of f, relative 1e-8 of l), ca[d], cb[d] (when not NULL) the cos and s sin of
+ * that angle. The table stops where a vertex of the bin can be beyond the arc atan(1/s). */
+static int kill_table(const g3_ctx *c, double err, double *ca, double *cb, double *kill)
+{
+    int reach = 0;
+    for (int d = 0; d <= G3_MAX_REACH; d++) {
+        double phi = (d + 1) * c->width + err + 1e-9, A = cos(phi), B = c->s * sin(phi);
+        if (ca) ca[d] = A;
+        if (cb) cb[d] = B;
+        double k = (A - 2 * B) / sqrt(3.0);
+        kill[d] = k - 1e-7 * fabs(k) - 1e-8;
+        /* A vertex of the bin can be at an angle beyond the arc: no blocking there. */
+        if (!(phi < G3_PI / 2 && A > B * (1 + 1e-9))) break;
+        reach = d;
+    }
+    return reach;
 }
 
 fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p, double kappa,
@@ -278,18 +512,10 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     double arc = atan(1 / c.s), nb = ceil(2 * G3_PI / (arc / G3_BINS_PER_ARC));
     c.bins = nb > 4096 || !(nb >= 1) ? 4096 : nb < 8 ? 8 : (size_t)nb;
     c.width = 2 * G3_PI / (double)c.bins;
-    c.reach = 0;
-    for (int d = 0; d <= G3_MAX_REACH; d++) {
-        double phi = (d + 1) * c.width + 1e-9;
-        c.ca[d] = cos(phi);
-        c.cb[d] = c.s * sin(phi);
-        /* g(h_min)/l with a margin for the rounding of f (relative 1e-8 of l). */
-        double k = (c.ca[d] - 2 * c.cb[d]) / sqrt(3.0);
-        c.kill[d] = k - 1e-7 * fabs(k) - 1e-8;
-        /* A vertex of the bin can be at an angle beyond the arc: no blocking there. */
-        if (!(phi < G3_PI / 2 && c.ca[d] > c.cb[d] * (1 + 1e-9))) break;
-        c.reach = d;
-    }
+    c.reach = kill_table(&c, 0, c.ca, c.cb, c.kill);
+    c.quick_reach = kill_table(&c, G3_QUICK_ERR, NULL, NULL, c.quick_kill);
+    c.plain = (pairs & GAMMA3_PLAIN_SCAN) != 0;
+    c.stats = stats;
     c.limit = fl_alloc_array(c.bins, sizeof *c.limit);
     c.dead = calloc(c.bins, 1);
     if (!c.limit || !c.dead) {
@@ -299,8 +525,18 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     }
     fl_vec_init(&c.seen, sizeof(uint32_t));
     fl_vec_init(&c.scan, sizeof(uint32_t));
+    fl_vec_init(&c.stack, sizeof(uint32_t));
+    if (!c.plain && c.n > 1) {
+        c.stamp = calloc(c.n, sizeof *c.stamp);
+        if (!c.stamp || gamma3_kdtree_build(&c.kd, c.xyz, c.n) < 0) {
+            free(c.stamp);
+            free(c.limit);
+            free(c.dead);
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
+        }
+    }
     fl_status st = FL_OK;
-    if (pairs == GAMMA3_CELL_PAIRS) {
+    if (pairs & GAMMA3_CELL_PAIRS) {
         g3_run run = {&c, b, progress, user, 0, c.n * (c.n - 1) / 2};
         st = gamma3_cell_pairs(grid, c.s, run_pair, &run, stats, err);
     } else {
@@ -320,6 +556,9 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     }
     fl_vec_free(&c.seen);
     fl_vec_free(&c.scan);
+    fl_vec_free(&c.stack);
+    gamma3_kdtree_free(&c.kd);
+    free(c.stamp);
     free(c.limit);
     free(c.dead);
     return st;

@@ -10,7 +10,10 @@
 /* Which vertex pairs go through the per-pair scan. */
 typedef enum gamma3_pairs {
     GAMMA3_ALL_PAIRS = 0, /* every one of the N(N-1)/2 pairs */
-    GAMMA3_CELL_PAIRS = 1 /* a dual-tree recursion; certified cell pairs are skipped */
+    GAMMA3_CELL_PAIRS = 1, /* a dual-tree recursion; certified cell pairs are skipped */
+    /* Flag to OR in: each pair goes straight to the ring scan (no quick drop test), i.e. the
+     * search of round 9, kept as the reference the tests compare the default with. */
+    GAMMA3_PLAIN_SCAN = 2
 } gamma3_pairs;
 
 /* What gamma3_edge_triangles uses (docs/gamma.md, "Certifying far cell pairs"). */
@@ -22,6 +25,13 @@ typedef struct gamma3_stats {
     size_t pairs_certified; /* pairs inside certified cell pairs (never scanned) */
     size_t cert_tries, cert_ok;
     size_t cert_visits;     /* points looked at by the certificates */
+    size_t quick_dropped;   /* pairs dropped by the quick drop test */
+    size_t quick_visits;    /* points the quick drop test looked at */
+    size_t scan_dropped;    /* pairs dropped by the ring scan */
+    size_t scan_kept;       /* pairs whose candidates went to the exact check */
+    size_t scan_visits;     /* points the ring scan saw (dropped and kept pairs) */
+    size_t kd_walks;        /* pairs whose scan went on in the kd-tree (kd_scan) */
+    size_t candidates;      /* triangles handed to the exact check */
 } gamma3_stats;
 
 /* gamma3_edge_triangles with an explicit pair strategy; stats may be NULL. */
@@ -30,8 +40,30 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
                                      gamma3_pairs pairs, graph_builder *b, gamma3_stats *stats,
                                      fl_error *err);
 
+/* atan2(y, x) within 1e-5 rad for finite (x, y) != (0, 0) (the quick drop test's angles). */
+double gamma3_quick_angle(double x, double y);
+
 /* An orthonormal frame (e, u1, u2) around the unit vector e (shared by both halves). */
 void gamma3_frame(const double *e, double *u1, double *u2);
+
+/* A kd-tree of the points (gamma3_cells.c): median splits of the longest box side, leaves of at
+ * most 8 points; node 0 is the root, a node's children are child and child + 1 (child = 0 for a
+ * leaf), its points perm[begin .. end-1] lie in the box [lo, hi] of half-diagonal r. */
+typedef struct gamma3_kd_node {
+    double lo[3], hi[3], r;
+    uint32_t begin, end, child;
+} gamma3_kd_node;
+
+typedef struct gamma3_kdtree {
+    const double *xyz;
+    uint32_t *perm;
+    gamma3_kd_node *nodes;
+    size_t count;
+} gamma3_kdtree;
+
+/* Builds the tree of the n finite points xyz (kept by reference); 0, or -1 out of memory. */
+int gamma3_kdtree_build(gamma3_kdtree *t, const double *xyz, size_t n);
+void gamma3_kdtree_free(gamma3_kdtree *t);
 
 /* Per-pair callback of the recursion: 0 to go on, -1 out of memory. */
 typedef int (*gamma3_pair_fn)(void *ctx, uint32_t a, uint32_t b);

@@ -6,7 +6,7 @@
  * triangles, ill-conditioned angles around an edge), clusters and lattices (ties between edge
  * lengths, so several shortest edges), and kappa from 0.05 to 0.95 (blocking arcs from 43° to
  * 3°). The sets must produce non-Delaunay triangles for the comparison to test anything. */
-#include "gamma_oracle.h"
+#include "gamma3_test.h"
 
 static const double kappas[] = {0.05, 0.2, 0.5, 0.8, 0.95};
 
@@ -81,19 +81,8 @@ static void test_gamma3_candidates_near_sphere(void)
 {
     unsigned long long s = 920;
     double p[3 * 30];
-    for (int i = 0; i < 30; i++) {
-        double q[3], r2;
-        do {
-            r2 = 0;
-            for (int k = 0; k < 3; k++) {
-                q[k] = 2 * fl_test_rand01(&s) - 1;
-                r2 += q[k] * q[k];
-            }
-        } while (r2 > 1 || r2 < 0.01);
-        double scale = (1 + 0.02 * (2 * fl_test_rand01(&s) - 1)) / sqrt(r2);
-        for (int k = 0; k < 3; k++)
-            p[3 * i + k] = q[k] * scale;
-    }
+    for (int i = 0; i < 30; i++)
+        gamma3_test_sphere_point(&s, 0.02, p + 3 * i);
     check_set(p, 30, "sphere");
 }
 

@@ -14,50 +14,24 @@
  *    certificate made too aggressive that way. Dropping only alpha is not caught here. */
 #include "gamma_oracle.h"
 
-#include "graphs/gamma3_search.h"
+#include "gamma3_test.h"
 
 static const double kappa = 0.5;
-
-/* Non-Delaunay triangles with c1' in [-kappa, 0) through the internal search. */
-static void cells_graph(const double *p, size_t n, gamma3_pairs how, fl_graph *out,
-                        gamma3_stats *st)
-{
-    fl_error err;
-    graph_grid g;
-    CHECK_STATUS(graph_grid_build(&g, p, n, 3, &err), FL_OK, &err);
-    fl_gamma_params gp = {1, {-1, 1, -kappa, -1e-300}};
-    graph_builder b;
-    graph_builder_init(&b, 3, 3, n);
-    memset(st, 0, sizeof *st);
-    CHECK_STATUS(gamma3_edge_triangles_with(&g, &gp, kappa, NULL, how, &b, st, &err), FL_OK,
-                 &err);
-    CHECK_STATUS(graph_builder_finish(&b, 1, out, &err), FL_OK, &err);
-    graph_builder_free(&b);
-    graph_grid_free(&g);
-}
-
-static int same_graph(const fl_graph *a, const fl_graph *b)
-{
-    int same = oracle_graph_equal(a, b);
-    for (size_t i = 0; same && i < 2 * a->simplex_count; i++)
-        same = a->params[i] == b->params[i];
-    return same;
-}
 
 /* The cell path against the brute force and the all-pairs path; returns the stats. */
 static gamma3_stats compare_paths(const double *p, size_t n, const char *what)
 {
     fl_graph cells, all, brute;
     gamma3_stats st, st_all;
-    cells_graph(p, n, GAMMA3_CELL_PAIRS, &cells, &st);
-    cells_graph(p, n, GAMMA3_ALL_PAIRS, &all, &st_all);
+    cells = gamma3_test_search(p, n, kappa, GAMMA3_CELL_PAIRS, &st);
+    all = gamma3_test_search(p, n, kappa, GAMMA3_ALL_PAIRS, &st_all);
     fl_gamma_params gp = {1, {-1, 1, -kappa, -1e-300}};
     fl_graph_options slow = {FL_GAMMA_BRUTE_FORCE, 1, NULL, NULL};
     fl_error err;
     CHECK_STATUS(fl_gamma_graph(p, n, 3, &gp, &slow, &brute, &err), FL_OK, &err);
-    CHECK_MSG(same_graph(&cells, &brute), "%s: cells %zu vs brute force %zu triangles", what,
+    CHECK_MSG(gamma3_test_same(&cells, &brute), "%s: cells %zu vs brute force %zu triangles", what,
               cells.simplex_count, brute.simplex_count);
-    CHECK(same_graph(&all, &brute));
+    CHECK(gamma3_test_same(&all, &brute));
     CHECK(brute.simplex_count > 0);
     /* Every pair exactly once: scanned or inside a certified cell pair. */
     CHECK_EQ_INT((long long)(st.pairs_scanned + st.pairs_certified), (long long)(n * (n - 1) / 2));

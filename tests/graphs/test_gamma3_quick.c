@@ -8,42 +8,15 @@
  * clustered sets, and the counters must show that both shortcuts ran. */
 #include "gamma_oracle.h"
 
-#include "graphs/gamma3_search.h"
-
-static fl_graph search(const double *p, size_t n, double kappa, gamma3_pairs how,
-                       gamma3_stats *st)
-{
-    fl_error err;
-    graph_grid g;
-    CHECK_STATUS(graph_grid_build(&g, p, n, 3, &err), FL_OK, &err);
-    fl_gamma_params gp = {1, {-1, 1, -kappa, -1e-300}};
-    graph_builder b;
-    graph_builder_init(&b, 3, 3, n);
-    memset(st, 0, sizeof *st);
-    CHECK_STATUS(gamma3_edge_triangles_with(&g, &gp, kappa, NULL, how, &b, st, &err), FL_OK,
-                 &err);
-    fl_graph out;
-    CHECK_STATUS(graph_builder_finish(&b, 1, &out, &err), FL_OK, &err);
-    graph_builder_free(&b);
-    graph_grid_free(&g);
-    return out;
-}
-
-static int same_graph(const fl_graph *a, const fl_graph *b)
-{
-    int same = oracle_graph_equal(a, b);
-    for (size_t i = 0; same && i < 2 * a->simplex_count; i++)
-        same = a->params[i] == b->params[i];
-    return same;
-}
+#include "gamma3_test.h"
 
 /* Default against plain (and the brute force when `brute`); returns the default's counters. */
 static gamma3_stats compare(const double *p, size_t n, double kappa, int brute, const char *what)
 {
     gamma3_stats fast, plain;
-    fl_graph a = search(p, n, kappa, GAMMA3_ALL_PAIRS, &fast);
-    fl_graph b = search(p, n, kappa, GAMMA3_ALL_PAIRS | GAMMA3_PLAIN_SCAN, &plain);
-    CHECK_MSG(same_graph(&a, &b), "%s n %zu kappa %g: default %zu vs plain %zu triangles", what, n,
+    fl_graph a = gamma3_test_search(p, n, kappa, GAMMA3_ALL_PAIRS, &fast);
+    fl_graph b = gamma3_test_search(p, n, kappa, GAMMA3_ALL_PAIRS | GAMMA3_PLAIN_SCAN, &plain);
+    CHECK_MSG(gamma3_test_same(&a, &b), "%s n %zu kappa %g: default %zu vs plain %zu triangles", what, n,
               kappa, a.simplex_count, b.simplex_count);
     CHECK(a.simplex_count > 0);
     CHECK_EQ_INT((long long)plain.quick_dropped, 0);
@@ -54,7 +27,7 @@ static gamma3_stats compare(const double *p, size_t n, double kappa, int brute, 
         fl_graph c;
         fl_error err;
         CHECK_STATUS(fl_gamma_graph(p, n, 3, &gp, &slow, &c, &err), FL_OK, &err);
-        CHECK_MSG(same_graph(&a, &c), "%s n %zu: default %zu vs brute force %zu triangles", what,
+        CHECK_MSG(gamma3_test_same(&a, &c), "%s n %zu: default %zu vs brute force %zu triangles", what,
                   n, a.simplex_count, c.simplex_count);
         fl_graph_free(&c);
     }
@@ -132,19 +105,8 @@ static void test_gamma3_quick_structured_sets_equal_plain_scan(void)
         p[3 * i + 2] = 0.02 * fl_test_rand01(&s);
     }
     compare(p, n, 0.5, 0, "slab");
-    for (size_t i = 0; i < n; i++) {
-        double q[3], r2;
-        do {
-            r2 = 0;
-            for (int k = 0; k < 3; k++) {
-                q[k] = 2 * fl_test_rand01(&s) - 1;
-                r2 += q[k] * q[k];
-            }
-        } while (r2 > 1 || r2 < 0.01);
-        double scale = (1 + 0.05 * (2 * fl_test_rand01(&s) - 1)) / sqrt(r2);
-        for (int k = 0; k < 3; k++)
-            p[3 * i + k] = q[k] * scale;
-    }
+    for (size_t i = 0; i < n; i++)
+        gamma3_test_sphere_point(&s, 0.05, p + 3 * i);
     compare(p, 100, 0.5, 0, "near sphere");
     const double centres[4][3] = {{0, 0, 0}, {3, 0, 0}, {0, 2, 1}, {1, 1, 4}};
     for (size_t i = 0; i < n; i++)

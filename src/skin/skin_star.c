@@ -249,6 +249,7 @@ static int locally_empty(const double *xyzw, const fl_rt3 *rt, size_t i, const d
  * checks downstream (Euler, certified Hausdorff of the union and of the skin mesh) run on the
  * balls kept. */
 #define SKIN_TWIN_TOL 1e-12
+#define SKIN_TWIN_WINDOW 64
 static size_t merge_twins(double *d, size_t n)
 {
     if (n < 2) return n;
@@ -262,8 +263,11 @@ static size_t merge_twins(double *d, size_t n)
     for (size_t i = 0; i < n; i++) {
         const double *b = d + 4 * i;
         int twin = 0;
-        /* the kept balls are sorted by x: look back while x is within tol */
-        for (size_t j = u; j-- > 0 && !twin && b[0] - d[4 * j] <= tol;)
+        /* the kept balls are sorted by x: look back while x is within tol, at most
+         * SKIN_TWIN_WINDOW balls (many balls sharing one x, e.g. on a symmetry plane, must not
+         * make this quadratic; a twin missed only costs the mesher time, never correctness) */
+        size_t look = 0;
+        for (size_t j = u; j-- > 0 && !twin && look++ < SKIN_TWIN_WINDOW && b[0] - d[4 * j] <= tol;)
             twin = fabs(b[1] - d[4 * j + 1]) <= tol && fabs(b[2] - d[4 * j + 2]) <= tol &&
                    fabs(b[3] - d[4 * j + 3]) <= wtol;
         if (!twin) memmove(d + 4 * u++, b, 4 * sizeof(double));

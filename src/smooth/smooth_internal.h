@@ -25,6 +25,18 @@ static inline void g1_cross(const double *a, const double *b, double *r)
     r[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+/* Multiplies v by 2^-k, 2^k the power of two just above its largest |component| (exact unless
+ * a component becomes subnormal); leaves zero and non-finite vectors unchanged. */
+static inline void g1_pow2_scale(double *v)
+{
+    double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (!(m > 0) || isinf(m)) return;
+    int k;
+    frexp(m, &k);
+    for (int d = 0; d < 3; d++)
+        v[d] = ldexp(v[d], -k);
+}
+
 /* Scales v to unit length; returns its former length. */
 /* |v| without overflow or underflow of |v|^2 (components of 1e-150 or 1e150 are in range). */
 static inline double g1_length(const double *v)

@@ -35,6 +35,12 @@ void fl_g1_patch_eval(const double *ctrl, double u, double v, double w, double p
         double e1[3], e2[3];
         g1_sub(a[0], a[2], e1);
         g1_sub(a[1], a[2], e2);
+        /* Each side scaled by a power of two near its largest component (exact, so the normal
+         * is bit-identical where nothing overflows): the cross product of sides of 1e154 would
+         * overflow (fuzz_smooth, a mesh at 2e148 whose tangents the micro-corner blending
+         * lengthened) and of 1e-160 underflow to the zero vector. */
+        g1_pow2_scale(e1);
+        g1_pow2_scale(e2);
         g1_cross(e1, e2, normal);
         g1_normalize(normal);
     }

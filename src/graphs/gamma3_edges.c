@@ -33,6 +33,7 @@
 #define G3_MAX_REACH 8
 #define G3_KD_AFTER 1       /* scan_edge goes from rings to the kd-tree after this ring */
 #define G3_QUICK_ERR 1e-5   /* bound on the error of gamma3_quick_angle (radians), see there */
+#define G3_WIT_MAX 24       /* witnesses kept for one dropped pair */
 
 typedef struct g3_ctx {
     const graph_grid *grid;
@@ -47,8 +48,20 @@ typedef struct g3_ctx {
     double ca[G3_MAX_REACH + 1], cb[G3_MAX_REACH + 1]; /* cos, s sin of the worst angle */
     double kill[G3_MAX_REACH + 1]; /* f/l below which a point's threshold is under l/sqrt(3) */
     int quick_reach;  /* the same for the quick drop test, whose angles err by G3_QUICK_ERR */
+    int quick_full;   /* the last quick_point call killed its whole reach */
     double quick_kill[G3_MAX_REACH + 1];
     int plain;        /* 1: the per-pair scan alone (no quick drop test), for the tests */
+    int witness;      /* 1: witness reuse (docs/gamma.md, "Round 11: witness reuse") */
+    uint32_t *killer; /* per bin, the point that killed it or set its limit (scan_edge) */
+    unsigned char *mark; /* per point, scratch of collect_killers (all 0 between calls) */
+    uint32_t wit[G3_WIT_MAX]; /* the points that killed bins of the current pair */
+    size_t wit_count;
+    uint32_t extra[G3_WIT_MAX]; /* points of the current pair that killed their whole reach */
+    size_t extra_count;         /* but no bin still alive */
+    uint32_t last[G3_WIT_MAX]; /* the witnesses of the last dropped pair */
+    size_t last_count;
+    uint32_t *by_b;   /* per point b, G3_WIT_MAX witnesses of the last dropped pair (a', b) */
+    unsigned char *by_b_count;
     gamma3_kdtree kd; /* the far part of scan_edge (kd_scan); empty when plain */
     uint32_t *stamp;  /* stamp[q] == pair_stamp: q is already in seen */
     uint32_t pair_stamp;
@@ -136,7 +149,7 @@ static double threshold(double A, double B, double f, double l2)
  * A bin whose threshold falls below l/sqrt(3) can hold no third vertex at all ("dead"); that
  * is decided first, without the square root: threshold(f) < h_min iff f < g(h_min) =
  * l (A - 2B)/sqrt(3), g increasing (see threshold). */
-static void block_point(g3_ctx *c, double angle, double f, double l, double l2)
+static void block_point(g3_ctx *c, uint32_t q, double angle, double f, double l, double l2)
 {
     long home = (long)bin_of(c, angle), nb = (long)c->bins;
     for (long d = -c->reach; d <= c->reach; d++) {
@@ -147,10 +160,14 @@ static void block_point(g3_ctx *c, double angle, double f, double l, double l2)
         if (f < l * c->kill[far]) {
             c->dead[k] = 1;
             c->dead_count++;
+            c->killer[k] = q;
             continue;
         }
         double h = threshold(c->ca[far], c->cb[far], f, l2);
-        if (h < c->limit[k]) c->limit[k] = h;
+        if (h < c->limit[k]) {
+            c->limit[k] = h;
+            c->killer[k] = q;
+        }
     }
 }
 
@@ -199,6 +216,7 @@ static size_t quick_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, dou
                           size_t left)
 {
     double x1, x2, d2, rq;
+    c->quick_full = 0;
     if (q == E->a || q == E->b || !axis_plane(E, c->xyz + 3 * (size_t)q, &x1, &x2, &d2, &rq))
         return left;
     double f = apex_height(d2, rq, l2);
@@ -206,6 +224,7 @@ static size_t quick_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, dou
     int reach = 0; /* quick_kill decreases: the bins killed are contiguous */
     while (reach < c->quick_reach && f < l * c->quick_kill[reach + 1])
         reach++;
+    c->quick_full = reach == c->quick_reach;
     long nb = (long)c->bins, home = (long)bin_of(c, gamma3_quick_angle(x1, x2));
     for (long d = -reach; d <= reach; d++) {
         long kk = home + d;
@@ -224,12 +243,10 @@ static size_t quick_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, dou
  * some point q (the arc bounds the true angle to q, the error of q's angle included), so q lies
  * in the lens of every triangle abc with ab shortest (the lens test above) and no triangle with
  * shortest edge ab is accepted. 0 when not shown (the pair goes to scan_edge). */
-static int quick_drop(g3_ctx *c, const g3_edge *E)
+static int quick_drop(g3_ctx *c, const g3_edge *E, size_t left)
 {
     const graph_grid *g = c->grid;
     double l2 = 0.25 * E->len2, l = sqrt(l2);
-    size_t left = c->bins;
-    memset(c->dead, 0, c->bins);
     long home[3], res[3];
     for (int a = 0; a < 3; a++) {
         res[a] = (long)g->res[a];
@@ -243,11 +260,77 @@ static int quick_drop(g3_ctx *c, const g3_edge *E)
         size_t cell = ((size_t)z * g->res[1] + (size_t)y) * g->res[0] + (size_t)x;
         for (size_t i = g->start[cell]; i < g->start[cell + 1]; i++) {
             if (c->stats) c->stats->quick_visits++;
-            left = quick_point(c, E, g->items[i], l, l2, left);
+            uint32_t q = g->items[i];
+            size_t now = quick_point(c, E, q, l, l2, left);
+            if (now < left) {
+                if (c->wit_count < G3_WIT_MAX) c->wit[c->wit_count++] = q;
+            } else if (c->quick_full && c->extra_count < G3_WIT_MAX)
+                c->extra[c->extra_count++] = q;
+            left = now;
             if (left == 0) return 1;
         }
     }
     return 0;
+}
+
+/* Witness reuse (docs/gamma.md, "Round 11: witness reuse"). quick_point's kill test holds for
+ * any point q, not only for the 27 cells of quick_drop: its proof (see quick_drop) uses only
+ * f_q, q's approximate angle and the arc shortened by G3_QUICK_ERR. So the points that killed
+ * the bins of an earlier dropped pair are tried first; if they kill every bin of this pair,
+ * the pair is dropped by the same proof, else quick_drop goes on from the bins they killed.
+ * The witness lists are hints: a wrong or stale list costs time, never a triangle. */
+
+/* Tests, with quick_point on the cleared bins, the witnesses of the last dropped pair (in the
+ * kd order usually (a, b') with b' just before b) and those of the last dropped pair (a', b)
+ * (a' usually the point before a); the points that kill bins go to c->wit, those that kill
+ * their whole reach but no live bin to c->extra. Returns the bins left alive. */
+static size_t witness_test(g3_ctx *c, const g3_edge *E)
+{
+    double l2 = 0.25 * E->len2, l = sqrt(l2);
+    size_t left = c->bins;
+    const uint32_t *list[2] = {c->last, c->by_b + (size_t)E->b * G3_WIT_MAX};
+    size_t count[2] = {c->last_count, c->by_b_count[E->b]};
+    for (int t = 0; t < 2; t++)
+        for (size_t i = 0; i < count[t]; i++) {
+            uint32_t q = list[t][i];
+            if (c->stats) c->stats->witness_visits++;
+            size_t now = quick_point(c, E, q, l, l2, left);
+            if (now < left) {
+                if (c->wit_count < G3_WIT_MAX) c->wit[c->wit_count++] = q;
+            } else if (c->quick_full && c->extra_count < G3_WIT_MAX)
+                c->extra[c->extra_count++] = q;
+            left = now;
+            if (left == 0) return 0;
+        }
+    return left;
+}
+
+/* The pair (a, b) was dropped: the witnesses c->wit, then c->extra (up to G3_WIT_MAX in all),
+ * become the last list and b's list. */
+static void remember(g3_ctx *c, uint32_t b)
+{
+    for (size_t i = 0; i < c->extra_count && c->wit_count < G3_WIT_MAX; i++)
+        c->wit[c->wit_count++] = c->extra[i];
+    memcpy(c->last, c->wit, c->wit_count * sizeof *c->wit);
+    c->last_count = c->wit_count;
+    memcpy(c->by_b + (size_t)b * G3_WIT_MAX, c->wit, c->wit_count * sizeof *c->wit);
+    c->by_b_count[b] = (unsigned char)c->wit_count;
+}
+
+/* After scan_edge dropped the pair: the distinct points that killed a bin or set its limit
+ * (every bin is dead or has a limit below l/sqrt(3), set during this pair) go to c->wit. */
+static void collect_killers(g3_ctx *c)
+{
+    c->wit_count = 0;
+    c->extra_count = 0;
+    for (size_t k = 0; k < c->bins && c->wit_count < G3_WIT_MAX; k++) {
+        uint32_t q = c->killer[k];
+        if (c->mark[q]) continue;
+        c->mark[q] = 1;
+        c->wit[c->wit_count++] = q;
+    }
+    for (size_t i = 0; i < c->wit_count; i++)
+        c->mark[c->wit[i]] = 0;
 }
 
 /* One point seen by scan_edge: lowers the bin limits; returns 1 when every bin is dead. */
@@ -257,7 +340,7 @@ static int see_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l
     double d2, rq, angle = axis_coords(E, c->xyz + 3 * (size_t)q, &d2, &rq);
     if (isnan(angle)) return 0;
     double f = apex_height(d2, rq, l2);
-    if (isfinite(f)) block_point(c, angle, f, l, l2);
+    if (isfinite(f)) block_point(c, q, angle, f, l, l2);
     return c->dead_count == c->bins;
 }
 
@@ -422,8 +505,21 @@ static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
         return 0;
     }
     if (!c->plain) {
-        if (quick_drop(c, &E)) {
+        size_t left = c->bins;
+        memset(c->dead, 0, c->bins);
+        c->wit_count = 0;
+        c->extra_count = 0;
+        if (c->witness) {
+            left = witness_test(c, &E);
+            if (left == 0) {
+                if (c->stats) c->stats->witness_dropped++;
+                remember(c, b);
+                return 0;
+            }
+        }
+        if (quick_drop(c, &E, left)) {
             if (c->stats) c->stats->quick_dropped++;
+            if (c->witness) remember(c, b);
             return 0;
         }
     }
@@ -434,7 +530,13 @@ static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
         else c->stats->scan_kept++;
         c->stats->scan_visits += c->seen.count;
     }
-    if (r) return 0;
+    if (r) {
+        if (c->witness) {
+            collect_killers(c);
+            remember(c, b);
+        }
+        return 0;
+    }
     const uint32_t *items = c->seen.data;
     for (size_t i = 0; i < c->seen.count; i++) {
         uint32_t q = items[i];
@@ -515,12 +617,24 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     c.reach = kill_table(&c, 0, c.ca, c.cb, c.kill);
     c.quick_reach = kill_table(&c, G3_QUICK_ERR, NULL, NULL, c.quick_kill);
     c.plain = (pairs & GAMMA3_PLAIN_SCAN) != 0;
+    c.witness = !c.plain && !(pairs & GAMMA3_NO_WITNESS) && c.n > 1;
     c.stats = stats;
     c.limit = fl_alloc_array(c.bins, sizeof *c.limit);
     c.dead = calloc(c.bins, 1);
-    if (!c.limit || !c.dead) {
+    c.killer = calloc(c.bins, sizeof *c.killer);
+    if (c.witness) {
+        c.mark = calloc(c.n, 1);
+        c.by_b = fl_alloc_array(c.n, G3_WIT_MAX * sizeof *c.by_b);
+        c.by_b_count = calloc(c.n, 1);
+    }
+    if (!c.limit || !c.dead || !c.killer ||
+        (c.witness && (!c.mark || !c.by_b || !c.by_b_count))) {
         free(c.limit);
         free(c.dead);
+        free(c.killer);
+        free(c.mark);
+        free(c.by_b);
+        free(c.by_b_count);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     }
     fl_vec_init(&c.seen, sizeof(uint32_t));
@@ -532,9 +646,18 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
             free(c.stamp);
             free(c.limit);
             free(c.dead);
+            free(c.killer);
+            free(c.mark);
+            free(c.by_b);
+            free(c.by_b_count);
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
         }
     }
+    /* With witness reuse the pairs go in the kd-tree's order of the points (leaves of nearby
+     * points in a row), so that consecutive pairs have nearby midpoints and the witnesses of
+     * one dropped pair are likely to drop the next: pair (order[i], order[j]) for i < j is
+     * every unordered pair once, as in index order; the builder sorts the output. */
+    const uint32_t *order = c.witness ? c.kd.perm : NULL;
     fl_status st = FL_OK;
     if (pairs & GAMMA3_CELL_PAIRS) {
         g3_run run = {&c, b, progress, user, 0, c.n * (c.n - 1) / 2};
@@ -546,8 +669,9 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
                 st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
                 break;
             }
+            uint32_t a = order ? order[i] : i;
             for (uint32_t j = i + 1; j < c.n; j++)
-                if (edge_triangles(&c, i, j, b) < 0) {
+                if (edge_triangles(&c, a, order ? order[j] : j, b) < 0) {
                     st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
                     break;
                 }
@@ -561,5 +685,9 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     free(c.stamp);
     free(c.limit);
     free(c.dead);
+    free(c.killer);
+    free(c.mark);
+    free(c.by_b);
+    free(c.by_b_count);
     return st;
 }

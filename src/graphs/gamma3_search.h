@@ -13,7 +13,10 @@ typedef enum gamma3_pairs {
     GAMMA3_CELL_PAIRS = 1, /* a dual-tree recursion; certified cell pairs are skipped */
     /* Flag to OR in: each pair goes straight to the ring scan (no quick drop test), i.e. the
      * search of round 9, kept as the reference the tests compare the default with. */
-    GAMMA3_PLAIN_SCAN = 2
+    GAMMA3_PLAIN_SCAN = 2,
+    /* Flag to OR in: no witness reuse (docs/gamma.md, "Round 11: witness reuse"): the pairs in
+     * index order, each starting with the quick drop test, i.e. the default of round 10. */
+    GAMMA3_NO_WITNESS = 4
 } gamma3_pairs;
 
 /* What gamma3_edge_triangles uses (docs/gamma.md, "Certifying far cell pairs"). */
@@ -25,6 +28,8 @@ typedef struct gamma3_stats {
     size_t pairs_certified; /* pairs inside certified cell pairs (never scanned) */
     size_t cert_tries, cert_ok;
     size_t cert_visits;     /* points looked at by the certificates */
+    size_t witness_dropped; /* pairs dropped by the cached witnesses of earlier pairs */
+    size_t witness_visits;  /* cached witnesses tested */
     size_t quick_dropped;   /* pairs dropped by the quick drop test */
     size_t quick_visits;    /* points the quick drop test looked at */
     size_t scan_dropped;    /* pairs dropped by the ring scan */

@@ -66,11 +66,50 @@ static void neighbour_key(const skin_simplex *s, int drop, uint32_t add, uint32_
         key[m++] = UINT32_MAX;
 }
 
+/* Why a walk gave up (counted by a FL_SKIN_WALK_STATS build, skin_walk_stats): the
+ * neighbour is not listed, the cell is shaky (+ its SKIN_SHAKY_* bits), the power-face box
+ * test failed, or the step cap was reached. */
+enum { WHY_MISSING = 1, WHY_BOX = 2, WHY_CAP = 3, WHY_SHAKY = 8 };
+
+#ifdef FL_SKIN_WALK_STATS
+#include <stdio.h>
+#include <stdlib.h>
+static _Atomic size_t stat_eval, stat_walk, stat_why[16];
+static void stats_print(void)
+{
+    size_t e = stat_eval, w = stat_walk;
+    fprintf(stderr, "skin walk stats: %zu evaluations, %zu walk answers, %zu scans (%.1f %%):",
+            e, w, e - w, e ? 100.0 * (double)(e - w) / (double)e : 0.0);
+    static const char *name[16] = {"?", "missing", "box", "cap", "", "", "", "", "shaky?",
+                                   "cond", "sliver", "cond+sliver", "degen", "cond+degen",
+                                   "sliver+degen", "all3"};
+    for (int i = 0; i < 16; i++)
+        if (stat_why[i]) fprintf(stderr, " %s %zu", name[i], (size_t)stat_why[i]);
+    fprintf(stderr, "\n");
+}
+/* FL_SKIN_TRUST: SKIN_SHAKY_* bits the walk ignores (experiments of the counting build) */
+static unsigned trust_bits(void)
+{
+    static _Atomic int init = 0;
+    static unsigned bits;
+    if (!init) {
+        const char *e = getenv("FL_SKIN_TRUST");
+        bits = e ? (unsigned)atoi(e) : 0;
+        atexit(stats_print);
+        init = 1;
+    }
+    return bits;
+}
+#define SHAKY(s) ((s)->shaky & SKIN_SHAKY_GIVE_UP & ~trust_bits())
+#else
+#define SHAKY(s) ((s)->shaky & SKIN_SHAKY_GIVE_UP)
+#endif
+
 /* Whether x lies in the mixed cell of simplex id: 1 with *val = G(x); 0 with *next the
  * neighbouring cell across the most violated test; -1 when that neighbour is not listed or the
- * cell is shaky (its tests are not trustworthy; the caller scans). */
+ * cell is shaky (its tests are not trustworthy; the caller scans), *why then says which. */
 static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, double *val,
-                     uint32_t *next)
+                     uint32_t *next, int *why)
 {
     const skin_simplex *s = &sk->simplex[id];
     double t = sk->t, a[3], e[3][3], f[3], d[3], et[3], mu[4], xi[3] = {0, 0, 0}, sum = 0;
@@ -97,6 +136,7 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         uint32_t key[4];
         neighbour_key(s, worst, UINT32_MAX, key);
         *next = find_simplex(sk, key);
+        *why = WHY_MISSING;
         return *next == UINT32_MAX ? -1 : 0;
     }
     double proj[3], q[3], ut[3], q2 = 0, p2 = 0;
@@ -114,7 +154,8 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
      * ball b (e_b = z_b - a), times t so that small t does not amplify q/t */
     const double *b0 = sk->balls + 4 * (size_t)s->ball[0];
     double utl = sqrt(ut[0] * ut[0] + ut[1] * ut[1] + ut[2] * ut[2]), worst_h = 0;
-    uint32_t add = UINT32_MAX;
+    uint32_t add = UINT32_MAX, add_exact = UINT32_MAX;
+    int exact = (s->shaky & SKIN_SHAKY_SLIVER) != 0;
     for (size_t l = sk->link_start[id]; l < sk->link_start[id + 1]; l++) {
         const double *b = sk->balls + 4 * (size_t)sk->link[l];
         double eb[3] = {b[0] - b0[0], b[1] - b0[1], b[2] - b0[2]};
@@ -127,19 +168,37 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         if (!(h >= -tol) && !(h / el >= worst_h)) { /* most violated per unit distance */
             worst_h = h == h ? h / el : -HUGE_VAL;
             add = sk->link[l];
+        } else if (exact && add == UINT32_MAX && add_exact == UINT32_MAX) {
+            /* a face of a sliver: h's rounding is not bounded by tol there (a skinny X, the
+             * link ball nearly in aff X), so every test that h does not reject is decided
+             * exactly */
+            int sg = skin_link_sign_exact(sk->balls, s, sk->link[l], x, t);
+            if (sg == 2) {
+                *why = WHY_SHAKY | s->shaky;
+                return -1;
+            }
+            if (sg < 0) add_exact = sk->link[l];
         }
     }
+    if (add == UINT32_MAX) add = add_exact;
     if (add != UINT32_MAX) {
         uint32_t key[4];
         neighbour_key(s, -1, add, key);
         *next = find_simplex(sk, key);
+        *why = WHY_MISSING;
         return *next == UINT32_MAX ? -1 : 0;
     }
-    if (s->shaky) return -1;
+    if (SHAKY(s)) {
+        *why = WHY_SHAKY | SHAKY(s);
+        return -1;
+    }
     for (int c = 0; s->box_exact && c < 3; c++) { /* t v = ut + t a within t box(nu_X) */
         double tv = ut[c] + t * a[c];
         double pad = SKIN_WALK_SLACK * (fabs(tv) + t * (fabs(s->nu_lo[c]) + fabs(s->nu_hi[c])));
-        if (!(tv >= t * s->nu_lo[c] - pad && tv <= t * s->nu_hi[c] + pad)) return -1;
+        if (!(tv >= t * s->nu_lo[c] - pad && tv <= t * s->nu_hi[c] + pad)) {
+            *why = WHY_BOX;
+            return -1;
+        }
     }
     *val = q2 - t / (1 - t) * p2 + t * skin_weight(sk->balls, s, a, f);
     return 1;
@@ -147,14 +206,16 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
 
 /* Walks from *cur for at most steps cells; 1 with *val when the cell of x was found. */
 static int walk(const fl_skin_function *sk, const double *x, uint32_t *cur, int steps,
-                double *val)
+                double *val, int *why)
 {
+    *why = WHY_CAP;
     for (int i = 0; i < steps; i++) {
         uint32_t next = 0;
-        int r = cell_test(sk, *cur, x, val, &next);
+        int r = cell_test(sk, *cur, x, val, &next, why);
         if (r) return r > 0;
         *cur = next;
     }
+    *why = WHY_CAP;
     return 0;
 }
 
@@ -167,7 +228,13 @@ uint32_t skin_locate(const fl_skin_function *sk, const double x[3], uint32_t *st
     }
     if (!(fabs(x[0]) <= 1e150 && fabs(x[1]) <= 1e150 && fabs(x[2]) <= 1e150)) return SKIN_NO_CELL;
     uint32_t cur = *start < sk->simplex_count ? *start : 0;
-    if (walk(sk, x, &cur, SKIN_WALK_NEAR, val)) {
+    int why = 0;
+#ifdef FL_SKIN_WALK_STATS
+    (void)trust_bits();
+    stat_eval++;
+    stat_walk++;
+#endif
+    if (walk(sk, x, &cur, SKIN_WALK_NEAR, val, &why)) {
         *start = cur;
         return cur;
     }
@@ -175,10 +242,14 @@ uint32_t skin_locate(const fl_skin_function *sk, const double x[3], uint32_t *st
     size_t cell = 0;
     if (skin_index_cell(sk, x, &cell) && sk->cell_start[cell] < sk->cell_start[cell + 1])
         cur = sk->cell_item[sk->cell_start[cell]];
-    if (walk(sk, x, &cur, SKIN_WALK_FAR, val)) {
+    if (walk(sk, x, &cur, SKIN_WALK_FAR, val, &why)) {
         *start = cur;
         return cur;
     }
+#ifdef FL_SKIN_WALK_STATS
+    stat_walk--;
+    stat_why[why & 15]++;
+#endif
     *val = skin_value_scan(sk, x);
     return SKIN_NO_CELL;
 }

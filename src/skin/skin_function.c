@@ -97,7 +97,7 @@ static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_si
             gmax = fmax(gmax, fabs(g[i][j]));
             imax = fmax(imax, fabs(s->ginv[i][j]));
         }
-    s->shaky = !(k * gmax * imax <= 1e10);
+    s->shaky = !(k * gmax * imax <= 1e10) ? SKIN_SHAKY_COND : 0;
     for (int i = 0; i < k; i++) {
         double eta = 0;
         for (int j = 0; j < k; j++)
@@ -559,7 +559,10 @@ static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const
         if (add_simplex(v, xyzw, tup[i].v, k - 1, bounded ? nlo : NULL, nhi)) goto nomem;
         if (v->count == before) continue; /* dropped (affinely dependent): no link either */
         ((skin_simplex *)v->data)[before].shaky |=
-            sliver || (k - 1 < 3 && nu_degenerate(tup, i, j, vor, &rt, xyzw, 4 - k));
+            (uint8_t)((sliver ? SKIN_SHAKY_SLIVER : 0) |
+                      (k - 1 < 3 && nu_degenerate(tup, i, j, vor, &rt, xyzw, 4 - k)
+                           ? SKIN_SHAKY_DEGEN
+                           : 0));
         if (simplex_link(link, tup, i, j, rt.tet) || fl_vec_push(link_start, &link->count, 1))
             goto nomem;
     }

@@ -43,8 +43,19 @@ typedef struct skin_simplex {
     /* 1 when the walk must not trust X's membership test: X is a face of a sliver whose
      * Voronoi vertex is decided by rounding, or its Gram matrix is ill-conditioned (its
      * barycentric coordinates are noise); a walk ending in X falls back to the scan. */
-    uint8_t shaky;
+    uint8_t shaky; /* SKIN_SHAKY_* bits (the reason, counted by a FL_SKIN_WALK_STATS build) */
 } skin_simplex;
+#define SKIN_SHAKY_COND 1u   /* Gram matrix condition > 1e10 */
+#define SKIN_SHAKY_SLIVER 2u /* a face of a tetrahedron whose Voronoi vertex is not bounded */
+#define SKIN_SHAKY_DEGEN 4u  /* power face possibly degenerate (nu_degenerate) */
+/* The bits that make the walk give up on a cell: a face of a sliver (SKIN_SHAKY_SLIVER) is
+ * walked, its link tests decided exactly inside their rounding band (skin_link_sign_exact). */
+#define SKIN_SHAKY_GIVE_UP (SKIN_SHAKY_COND | SKIN_SHAKY_DEGEN)
+/* skin_exact.c: the exact sign of the walk's link test of ball b for simplex s (k <= 2) at x,
+ * i.e. of pi_b(v) - pi_X(v) with v = f + q / t (skin_cell.c): -1, 0 or 1; 2 when it cannot
+ * be decided (k = 3, inputs beyond its integer range, out of memory). */
+int skin_link_sign_exact(const double *balls, const skin_simplex *s, uint32_t b,
+                         const double x[3], double t);
 
 /* The frame of s from the balls (x, y, z, w each): a = the centre of its first ball and
  * e_j = z_j - a, j < k (rows k.. are zero). */

@@ -8,7 +8,17 @@
  *    fl_skin_function_value: forward and backward orders agree);
  *  - on degenerate sets (a lattice of equal balls: cospherical everywhere; mirror twins 2^-56
  *    apart, as B* of a symmetric solid has) the walk equals the scan wherever either is <= 0
- *    (where the scan is G, docs/skin.md) and is never above the scan (an upper bound of G). */
+ *    (where the scan is G, docs/skin.md) and is never above the scan (an upper bound of G);
+ *  - on B* of the eps-approximation (unit cube) and on a sphere-like set whose negative balls
+ *    are the foci of the faces of its positive balls (coplanar by construction, so the
+ *    regular triangulation has nearly flat tetrahedra, as B* of sphere.off and the npm bunny),
+ *    the mesher's function (skin_function_new_mesher) walks: it equals the scan wherever
+ *    either is <= 0, answers inside the faces of slivers (their link tests decided exactly,
+ *    skin_link_sign_exact) and scans for fewer than 30 % of the queries (83 % when the faces
+ *    of slivers made the walk give up, round 10);
+ *  - skin_link_sign_exact agrees with the floating-point link test wherever that one is far
+ *    from 0, and with a recomputation in shifted coordinates (translation by a power of two:
+ *    the same exact value) everywhere. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -173,12 +183,269 @@ static void test_degenerate_sets_walk_equals_scan(void)
     CHECK_MSG(neg > 200, "%d negative", neg);
 }
 
+/* Walk against scan on the mesher's function of b at q_count points near the positive balls
+ * (steps as the mesher's neighbouring grid points); *in_sliver: answers from faces of
+ * slivers, *scans: queries the walk left to the scan. */
+static void mesher_walk_vs_scan(const double *b, size_t n, int q_count, int *in_sliver,
+                                int *scans)
+{
+    fl_skin_function *g = NULL;
+    fl_error err;
+    *in_sliver = *scans = 0;
+    CHECK_STATUS(skin_function_new_mesher(b, n, 0.5, &g, &err), FL_OK, &err);
+    if (!g) return;
+    CHECK(g->walkable);
+    size_t npos = 0, *pos = malloc(n * sizeof *pos);
+    for (size_t i = 0; i < n; i++)
+        if (b[4 * i + 3] > 0) pos[npos++] = i;
+    uint32_t start = 0;
+    double x[3] = {0, 0, 0};
+    int bad = 0, negatives = 0;
+    for (int q = 0; q < q_count; q++) {
+        const double *c = b + 4 * pos[(size_t)(rnd() * (double)npos)];
+        double r = sqrt(c[3]);
+        for (int k = 0; k < 3; k++)
+            x[k] = q % 40 == 0 ? c[k] + r * (2 * rnd() - 1) : x[k] + 0.05 * r * (2 * rnd() - 1);
+        double w;
+        uint32_t cell = skin_locate(g, x, &start, &w);
+        double s = skin_value_scan(g, x);
+        *scans += cell == SKIN_NO_CELL;
+        *in_sliver += cell != SKIN_NO_CELL && (g->simplex[cell].shaky & SKIN_SHAKY_SLIVER);
+        negatives += s < 0;
+        int ok = s <= 0 || w <= 0 ? fabs(w - s) <= 1e-9 * (1 + fabs(s))
+                                  : w <= s + 1e-9 * (1 + fabs(s));
+        if (!ok && bad++ < 3)
+            CHECK_MSG(0, "at (%.17g, %.17g, %.17g): walk %.17g, scan %.17g", x[0], x[1], x[2], w,
+                      s);
+    }
+    CHECK_MSG(bad == 0, "%d of %d walk values differ from the scan", bad, q_count);
+    CHECK_MSG(negatives > q_count / 10, "%d negative", negatives);
+    free(pos);
+    fl_skin_function_free(g);
+}
+
+static const double cube_xyz[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
+                                  0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+static const uint32_t cube_tri[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
+                                    1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
+
+static void test_bstar_of_cube_walks_through_slivers(void)
+{
+    fl_mesh m = {0};
+    m.vertex_count = 8;
+    m.triangle_count = 12;
+    m.xyz = (double *)cube_xyz;
+    m.tri = (uint32_t *)cube_tri;
+    fl_skin_approx_options o = {0};
+    o.max_rounds = 1;
+    o.grade = -1;
+    fl_skin_approx a;
+    fl_error err;
+    CHECK_STATUS(fl_skin_approx_build(&m, 0.5, &o, &a, &err), FL_OK, &err);
+    int in_sliver = 0, scans = 0, q = 6000;
+    mesher_walk_vs_scan(a.star.xyzw, a.star.count, q, &in_sliver, &scans);
+    CHECK_MSG(in_sliver > q / 20, "cube B* (%zu balls): %d answers in faces of slivers",
+              a.star.count, in_sliver);
+    CHECK_MSG(scans < q * 3 / 10, "cube B*: %d of %d queries scanned", scans, q);
+    fl_skin_approx_free(&a);
+}
+
+/* A geodesic sphere (icosahedron split once, radius 1) with positive balls of random radii
+ * at its vertices and one at the centre, and negative balls at the foci of its triangles and
+ * edges (the point of the face's plane / line with equal power to its balls): every triangle's
+ * focus and its edges' foci are coplanar, as B*'s focus balls are. */
+static size_t focus_sphere(double *b)
+{
+    static const double ico[12][3] = {{0, 1, 1.618}, {0, -1, 1.618}, {0, 1, -1.618},
+        {0, -1, -1.618}, {1, 1.618, 0}, {-1, 1.618, 0}, {1, -1.618, 0}, {-1, -1.618, 0},
+        {1.618, 0, 1}, {-1.618, 0, 1}, {1.618, 0, -1}, {-1.618, 0, -1}};
+    double v[42][3];
+    int nv = 0, tri[80][3], nt = 0, t0[20][3], n0 = 0;
+    for (int i = 0; i < 12; i++, nv++)
+        for (int c = 0; c < 3; c++)
+            v[nv][c] = ico[i][c];
+    for (int i = 0; i < 12; i++) /* the 20 faces: mutually adjacent vertex triples */
+        for (int j = i + 1; j < 12; j++)
+            for (int k = j + 1; k < 12; k++) {
+                double dij = 0, djk = 0, dik = 0;
+                for (int c = 0; c < 3; c++) {
+                    dij += (v[i][c] - v[j][c]) * (v[i][c] - v[j][c]);
+                    djk += (v[j][c] - v[k][c]) * (v[j][c] - v[k][c]);
+                    dik += (v[i][c] - v[k][c]) * (v[i][c] - v[k][c]);
+                }
+                if (dij < 4.1 && djk < 4.1 && dik < 4.1) {
+                    t0[n0][0] = i, t0[n0][1] = j, t0[n0][2] = k;
+                    n0++;
+                }
+            }
+    int mid[42][42] = {{0}};
+    for (int f = 0; f < n0; f++) {
+        int m3[3];
+        for (int e = 0; e < 3; e++) {
+            int a = t0[f][e], c = t0[f][(e + 1) % 3];
+            if (!mid[a][c]) {
+                for (int d = 0; d < 3; d++)
+                    v[nv][d] = 0.5 * (v[a][d] + v[c][d]);
+                mid[a][c] = mid[c][a] = nv++;
+            }
+            m3[e] = mid[a][c];
+        }
+        int sub[4][3] = {{t0[f][0], m3[0], m3[2]}, {m3[0], t0[f][1], m3[1]},
+                         {m3[2], m3[1], t0[f][2]}, {m3[0], m3[1], m3[2]}};
+        for (int s = 0; s < 4; s++, nt++)
+            for (int c = 0; c < 3; c++)
+                tri[nt][c] = sub[s][c];
+    }
+    size_t n = 0;
+    for (int i = 0; i < nv; i++, n++) { /* radius 1, ball radius 0.45..0.6 */
+        double l = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+        double r = 0.45 + 0.15 * rnd();
+        for (int c = 0; c < 3; c++)
+            b[4 * n + c] = v[i][c] / l;
+        b[4 * n + 3] = r * r;
+    }
+    b[4 * n + 0] = b[4 * n + 1] = b[4 * n + 2] = 0;
+    b[4 * n + 3] = 0.36;
+    n++;
+    int seen[42][42] = {{0}};
+    for (int f = 0; f < nt; f++) {
+        const double *p0 = b + 4 * tri[f][0];
+        for (int e = 0; e < 3; e++) { /* edge focus: z = p0 + s (p1 - p0), equal power */
+            int i = tri[f][e], j = tri[f][(e + 1) % 3];
+            if (seen[i][j]) continue;
+            seen[i][j] = seen[j][i] = 1;
+            const double *pi = b + 4 * i, *pj = b + 4 * j;
+            double d[3], l2 = 0;
+            for (int c = 0; c < 3; c++) {
+                d[c] = pj[c] - pi[c];
+                l2 += d[c] * d[c];
+            }
+            double s = 0.5 * (l2 - pj[3] + pi[3]) / l2, fw = 0;
+            for (int c = 0; c < 3; c++) {
+                b[4 * n + c] = pi[c] + s * d[c];
+                fw += (s * d[c]) * (s * d[c]);
+            }
+            b[4 * n + 3] = -0.1 * (pi[3] - fw > 0 ? pi[3] - fw : 0.01); /* negative */
+            n++;
+        }
+        /* triangle focus: p0 + s e1 + u e2 with equal power (2x2 system) */
+        const double *p1 = b + 4 * tri[f][1], *p2 = b + 4 * tri[f][2];
+        double e1[3], e2[3], g11 = 0, g12 = 0, g22 = 0;
+        for (int c = 0; c < 3; c++) {
+            e1[c] = p1[c] - p0[c];
+            e2[c] = p2[c] - p0[c];
+            g11 += e1[c] * e1[c];
+            g12 += e1[c] * e2[c];
+            g22 += e2[c] * e2[c];
+        }
+        double r1 = 0.5 * (g11 - p1[3] + p0[3]), r2 = 0.5 * (g22 - p2[3] + p0[3]);
+        double det = g11 * g22 - g12 * g12, s = (r1 * g22 - r2 * g12) / det;
+        double u = (g11 * r2 - g12 * r1) / det, fw = 0;
+        for (int c = 0; c < 3; c++) {
+            double o = s * e1[c] + u * e2[c];
+            b[4 * n + c] = p0[c] + o;
+            fw += o * o;
+        }
+        b[4 * n + 3] = -0.1 * (p0[3] - fw > 0 ? p0[3] - fw : 0.01);
+        n++;
+    }
+    return n;
+}
+
+static void test_focus_sphere_walks_through_slivers(void)
+{
+    static double b[4 * 400];
+    size_t n = focus_sphere(b);
+    int in_sliver = 0, scans = 0, q = 6000;
+    mesher_walk_vs_scan(b, n, q, &in_sliver, &scans);
+    CHECK_MSG(in_sliver > q / 50, "focus sphere (%zu balls): %d answers in faces of slivers", n,
+              in_sliver);
+    CHECK_MSG(scans < q * 3 / 10, "focus sphere: %d of %d queries scanned", scans, q);
+}
+
+/* The exact link sign against the floating-point test where that is far from 0 (random
+ * simplices, k = 0..2, random link balls and points), and against itself on the inputs
+ * translated by 2^-3 (exact in binary: the same polynomial value). */
+static void test_link_sign_exact_matches(void)
+{
+    double b[4 * 8];
+    int agree = 0, checked = 0;
+    for (int round = 0; round < 400; round++) {
+        for (int i = 0; i < 8; i++) {
+            for (int c = 0; c < 3; c++)
+                b[4 * i + c] = round % 2 ? 4 * rnd() : ldexp(floor(64 * rnd()), -4);
+            b[4 * i + 3] = 0.2 + rnd() - (i == 5 ? 0.5 : 0);
+        }
+        int k = round % 3;
+        uint32_t idx[3] = {0, 1, 2}, lb = 3;
+        skin_simplex s;
+        s.k = (uint8_t)k;
+        for (int i = 0; i < 4; i++)
+            s.ball[i] = i <= k ? idx[i] : UINT32_MAX;
+        double x[3] = {4 * rnd(), 4 * rnd(), 4 * rnd()}, t = round % 4 ? 0.5 : 0.375;
+        /* H = 2 (c - u^T G^-1 g) in long double (Cramer for k <= 2) */
+        long double e[3][3], d[3], r[3], G[2][2], g[2], u[2], cc;
+        for (int j = 0; j <= k; j++) {
+            int bi = j < k ? j + 1 : (int)lb;
+            long double l2 = 0;
+            for (int c = 0; c < 3; c++) {
+                e[j][c] = (long double)b[4 * bi + c] - b[c];
+                l2 += e[j][c] * e[j][c];
+            }
+            r[j] = 0.5L * (l2 - b[4 * bi + 3] + b[3]);
+        }
+        for (int c = 0; c < 3; c++)
+            d[c] = (long double)x[c] - b[c];
+        for (int i = 0; i <= k; i++)
+            for (int j = 0; j <= k; j++) {
+                long double v = 0;
+                for (int c = 0; c < 3; c++)
+                    v += e[i][c] * e[j][c];
+                if (i < k && j < k) G[i][j] = v;
+                if (i < k && j == k) g[i] = v;
+            }
+        long double ed[3] = {0, 0, 0};
+        for (int j = 0; j <= k; j++)
+            for (int c = 0; c < 3; c++)
+                ed[j] += e[j][c] * d[c];
+        for (int j = 0; j < k; j++)
+            u[j] = t * r[j] - ed[j];
+        cc = t * r[k] - ed[k];
+        long double h = cc;
+        if (k == 1) h = cc - u[0] * g[0] / G[0][0];
+        if (k == 2) {
+            long double det = G[0][0] * G[1][1] - G[0][1] * G[1][0];
+            long double y0 = (g[0] * G[1][1] - g[1] * G[0][1]) / det;
+            long double y1 = (G[0][0] * g[1] - G[1][0] * g[0]) / det;
+            h = cc - u[0] * y0 - u[1] * y1;
+        }
+        int sg = skin_link_sign_exact(b, &s, lb, x, t);
+        CHECK(sg == -1 || sg == 0 || sg == 1);
+        if (fabsl(h) > 1e-9L) {
+            checked++;
+            agree += sg == (h > 0 ? 1 : -1);
+        }
+        double bs[4 * 8], xs[3];
+        for (int i = 0; i < 8; i++)
+            for (int c = 0; c < 4; c++)
+                bs[4 * i + c] = b[4 * i + c] + (c < 3 ? 0.125 : 0);
+        for (int c = 0; c < 3; c++)
+            xs[c] = x[c] + 0.125;
+        if (round % 2 == 0) /* on the 2^-4 lattice the shift is exact */
+            CHECK_MSG(skin_link_sign_exact(bs, &s, lb, xs, t) == sg, "round %d: shifted", round);
+    }
+    CHECK_MSG(checked > 300 && agree == checked, "%d of %d signs agree", agree, checked);
+}
+
 int main(void)
 {
     static const fl_test_case cases[] = {
         FL_TEST_CASE(test_walk_matches_definition_everywhere),
         FL_TEST_CASE(test_value_does_not_depend_on_the_start),
         FL_TEST_CASE(test_degenerate_sets_walk_equals_scan),
+        FL_TEST_CASE(test_bstar_of_cube_walks_through_slivers),
+        FL_TEST_CASE(test_focus_sphere_walks_through_slivers),
+        FL_TEST_CASE(test_link_sign_exact_matches),
     };
     return fl_test_run(cases, sizeof cases / sizeof cases[0]);
 }

@@ -18,13 +18,10 @@
 #include <string.h>
 
 #include "fl_test.h"
+#include "skin_cube.h"
 #include "skin_oracle.h"
 #include "skin/skin_eps.h"
 
-static const double cube_xyz[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
-                                  0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-static const uint32_t cube_tri[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                    1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
 static const double tet_xyz[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
 static const uint32_t tet_tri[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
 
@@ -345,7 +342,7 @@ static void check_all(const fl_mesh *m, double eps, int alpha, const char *name)
 
 static void test_cube_balls_satisfy_theorem5(void)
 {
-    fl_mesh m = mesh_of(cube_xyz, 8, cube_tri, 12);
+    fl_mesh m = skin_cube_mesh();
     check_all(&m, 0.5, 1, "cube");
     check_all(&m, 0.25, 1, "cube");
 }

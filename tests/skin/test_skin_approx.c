@@ -10,21 +10,7 @@
 #include <string.h>
 
 #include "fl_test.h"
-
-static const double cube_xyz[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
-                                  0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-static const uint32_t cube_tri[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                    1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
-
-static fl_mesh cube(void)
-{
-    fl_mesh m = {0};
-    m.vertex_count = 8;
-    m.triangle_count = 12;
-    m.xyz = (double *)cube_xyz;
-    m.tri = (uint32_t *)cube_tri;
-    return m;
-}
+#include "skin_cube.h"
 
 /* The ball (x, y, z, w) lies in the closed unit cube (convex: its box suffices). Theorem 4:
  * an orthogonal ball of an eps-SAC does not cross the surface, so a B_perp ball whose centre
@@ -108,7 +94,7 @@ static void check_approximation(const fl_mesh *m, double eps, int (*ball_inside)
 
 static void test_cube_is_approximated_within_epsilon(void)
 {
-    fl_mesh m = cube();
+    fl_mesh m = skin_cube_mesh();
     check_approximation(&m, 0.5, ball_in_cube, "cube");
 }
 
@@ -135,7 +121,7 @@ static void test_octahedron_is_approximated_within_epsilon(void)
 
 static void test_bad_input_fails_cleanly(void)
 {
-    fl_mesh m = cube();
+    fl_mesh m = skin_cube_mesh();
     fl_skin_approx a;
     fl_error err;
     CHECK_STATUS(fl_skin_approx_build(&m, 0, NULL, &a, &err), FL_ERR_INPUT, &err);

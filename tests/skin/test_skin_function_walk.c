@@ -24,6 +24,7 @@
 #include <stdlib.h>
 
 #include "fl_test.h"
+#include "skin_cube.h"
 #include "skin_rng.h"
 #include "skin/skin_internal.h"
 /* only skin_oracle_value is used here; the header's other oracles are static */
@@ -224,18 +225,9 @@ static void mesher_walk_vs_scan(const double *b, size_t n, int q_count, int *in_
     fl_skin_function_free(g);
 }
 
-static const double cube_xyz[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0,
-                                  0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
-static const uint32_t cube_tri[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                    1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
-
 static void test_bstar_of_cube_walks_through_slivers(void)
 {
-    fl_mesh m = {0};
-    m.vertex_count = 8;
-    m.triangle_count = 12;
-    m.xyz = (double *)cube_xyz;
-    m.tri = (uint32_t *)cube_tri;
+    fl_mesh m = skin_cube_mesh();
     fl_skin_approx_options o = {0};
     o.max_rounds = 1;
     o.grade = -1;

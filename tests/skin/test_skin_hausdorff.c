@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "fl_test.h"
+#include "skin_cube.h"
 
 static double rnd(unsigned *s)
 {
@@ -121,9 +122,6 @@ static void sampled(const fl_balls *b, const fl_mesh *m, int per, unsigned seed,
     }
 }
 
-static const uint32_t cube_tri[] = {0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4,
-                                    1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7};
-
 static fl_mesh cube(double *xyz, double a)
 {
     for (int v = 0; v < 8; v++) {
@@ -131,7 +129,7 @@ static fl_mesh cube(double *xyz, double a)
         xyz[3 * v + 1] = (v & 2) ? a : -a;
         xyz[3 * v + 2] = (v & 4) ? a : -a;
     }
-    fl_mesh m = {8, xyz, 12, (uint32_t *)cube_tri};
+    fl_mesh m = {8, xyz, 12, (uint32_t *)skin_cube_tri};
     return m;
 }
 

@@ -235,6 +235,19 @@ static size_t quick_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, dou
     return left;
 }
 
+/* quick_point, and the bookkeeping of witness reuse: a point that kills bins goes to c->wit,
+ * one that kills its whole reach but no live bin to c->extra (see witness_test). */
+static size_t witness_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l2,
+                            size_t left)
+{
+    size_t now = quick_point(c, E, q, l, l2, left);
+    if (now < left) {
+        if (c->wit_count < G3_WIT_MAX) c->wit[c->wit_count++] = q;
+    } else if (c->quick_full && c->extra_count < G3_WIT_MAX)
+        c->extra[c->extra_count++] = q;
+    return now;
+}
+
 /* The quick drop test (docs/gamma.md, "Quick drop test"): the points of the 27 grid cells
  * around m's cell (rings 0 and 1, read straight from the grid in the order of quick_cells)
  * kill the bins within their kill arc (quick_kill: the arc of block_point shortened by
@@ -261,12 +274,7 @@ static int quick_drop(g3_ctx *c, const g3_edge *E, size_t left)
         for (size_t i = g->start[cell]; i < g->start[cell + 1]; i++) {
             if (c->stats) c->stats->quick_visits++;
             uint32_t q = g->items[i];
-            size_t now = quick_point(c, E, q, l, l2, left);
-            if (now < left) {
-                if (c->wit_count < G3_WIT_MAX) c->wit[c->wit_count++] = q;
-            } else if (c->quick_full && c->extra_count < G3_WIT_MAX)
-                c->extra[c->extra_count++] = q;
-            left = now;
+            left = witness_point(c, E, q, l, l2, left);
             if (left == 0) return 1;
         }
     }
@@ -294,12 +302,7 @@ static size_t witness_test(g3_ctx *c, const g3_edge *E)
         for (size_t i = 0; i < count[t]; i++) {
             uint32_t q = list[t][i];
             if (c->stats) c->stats->witness_visits++;
-            size_t now = quick_point(c, E, q, l, l2, left);
-            if (now < left) {
-                if (c->wit_count < G3_WIT_MAX) c->wit[c->wit_count++] = q;
-            } else if (c->quick_full && c->extra_count < G3_WIT_MAX)
-                c->extra[c->extra_count++] = q;
-            left = now;
+            left = witness_point(c, E, q, l, l2, left);
             if (left == 0) return 0;
         }
     return left;

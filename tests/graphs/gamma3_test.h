@@ -29,6 +29,17 @@ static inline fl_graph gamma3_test_search(const double *p, size_t n, double kapp
     return out;
 }
 
+/* The same graph by the brute force (the oracle of Theorem 3.1). */
+static inline fl_graph gamma3_test_brute(const double *p, size_t n, double kappa)
+{
+    fl_gamma_params gp = {1, {-1, 1, -kappa, -1e-300}};
+    fl_graph_options slow = {FL_GAMMA_BRUTE_FORCE, 1, NULL, NULL};
+    fl_graph out;
+    fl_error err;
+    CHECK_STATUS(fl_gamma_graph(p, n, 3, &gp, &slow, &out, &err), FL_OK, &err);
+    return out;
+}
+
 /* The same triangles with bit-identical (c0', c1'). */
 static inline int gamma3_test_same(const fl_graph *a, const fl_graph *b)
 {

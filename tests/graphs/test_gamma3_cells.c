@@ -25,10 +25,7 @@ static gamma3_stats compare_paths(const double *p, size_t n, const char *what)
     gamma3_stats st, st_all;
     cells = gamma3_test_search(p, n, kappa, GAMMA3_CELL_PAIRS, &st);
     all = gamma3_test_search(p, n, kappa, GAMMA3_ALL_PAIRS, &st_all);
-    fl_gamma_params gp = {1, {-1, 1, -kappa, -1e-300}};
-    fl_graph_options slow = {FL_GAMMA_BRUTE_FORCE, 1, NULL, NULL};
-    fl_error err;
-    CHECK_STATUS(fl_gamma_graph(p, n, 3, &gp, &slow, &brute, &err), FL_OK, &err);
+    brute = gamma3_test_brute(p, n, kappa);
     CHECK_MSG(gamma3_test_same(&cells, &brute), "%s: cells %zu vs brute force %zu triangles", what,
               cells.simplex_count, brute.simplex_count);
     CHECK(gamma3_test_same(&all, &brute));

@@ -22,11 +22,7 @@ static gamma3_stats compare(const double *p, size_t n, double kappa, int brute, 
     CHECK_EQ_INT((long long)plain.quick_dropped, 0);
     CHECK_EQ_INT((long long)plain.kd_walks, 0);
     if (brute) {
-        fl_gamma_params gp = {1, {-1, 1, -kappa, -1e-300}};
-        fl_graph_options slow = {FL_GAMMA_BRUTE_FORCE, 1, NULL, NULL};
-        fl_graph c;
-        fl_error err;
-        CHECK_STATUS(fl_gamma_graph(p, n, 3, &gp, &slow, &c, &err), FL_OK, &err);
+        fl_graph c = gamma3_test_brute(p, n, kappa);
         CHECK_MSG(gamma3_test_same(&a, &c), "%s n %zu: default %zu vs brute force %zu triangles", what,
                   n, a.simplex_count, c.simplex_count);
         fl_graph_free(&c);

@@ -49,11 +49,7 @@ static size_t compare(const double *p, size_t n, double kappa, int brute, const 
                              wit.scan_kept),
                  (long long)(n * (n - 1) / 2));
     if (brute) {
-        fl_gamma_params gp = {1, {-1, 1, -kappa, -1e-300}};
-        fl_graph_options slow = {FL_GAMMA_BRUTE_FORCE, 1, NULL, NULL};
-        fl_graph d;
-        fl_error err;
-        CHECK_STATUS(fl_gamma_graph(p, n, 3, &gp, &slow, &d, &err), FL_OK, &err);
+        fl_graph d = gamma3_test_brute(p, n, kappa);
         CHECK_MSG(gamma3_test_same(&a, &d), "%s n %zu: witnesses %zu vs brute force %zu triangles",
                   what, n, a.simplex_count, d.simplex_count);
         fl_graph_free(&d);

@@ -590,6 +590,22 @@ static int kill_table(const g3_ctx *c, double err, double *ca, double *cb, doubl
     return reach;
 }
 
+/* Frees what gamma3_edge_triangles_with allocated (any part may still be NULL or empty). */
+static void ctx_free(g3_ctx *c)
+{
+    fl_vec_free(&c->seen);
+    fl_vec_free(&c->scan);
+    fl_vec_free(&c->stack);
+    gamma3_kdtree_free(&c->kd);
+    free(c->stamp);
+    free(c->limit);
+    free(c->dead);
+    free(c->killer);
+    free(c->mark);
+    free(c->by_b);
+    free(c->by_b_count);
+}
+
 fl_status gamma3_edge_triangles(const graph_grid *grid, const fl_gamma_params *p, double kappa,
                                 const fl_graph_options *opt, graph_builder *b, fl_error *err)
 {
@@ -605,6 +621,9 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     void *user = opt ? opt->progress_user : NULL;
     g3_ctx c;
     memset(&c, 0, sizeof c);
+    fl_vec_init(&c.seen, sizeof(uint32_t));
+    fl_vec_init(&c.scan, sizeof(uint32_t));
+    fl_vec_init(&c.stack, sizeof(uint32_t));
     c.grid = grid;
     c.xyz = grid->coords;
     c.n = grid->n;
@@ -632,27 +651,13 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     }
     if (!c.limit || !c.dead || !c.killer ||
         (c.witness && (!c.mark || !c.by_b || !c.by_b_count))) {
-        free(c.limit);
-        free(c.dead);
-        free(c.killer);
-        free(c.mark);
-        free(c.by_b);
-        free(c.by_b_count);
+        ctx_free(&c);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
     }
-    fl_vec_init(&c.seen, sizeof(uint32_t));
-    fl_vec_init(&c.scan, sizeof(uint32_t));
-    fl_vec_init(&c.stack, sizeof(uint32_t));
     if (!c.plain && c.n > 1) {
         c.stamp = calloc(c.n, sizeof *c.stamp);
         if (!c.stamp || gamma3_kdtree_build(&c.kd, c.xyz, c.n) < 0) {
-            free(c.stamp);
-            free(c.limit);
-            free(c.dead);
-            free(c.killer);
-            free(c.mark);
-            free(c.by_b);
-            free(c.by_b_count);
+            ctx_free(&c);
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "out of memory");
         }
     }
@@ -681,16 +686,6 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
             if (stats) stats->pairs_scanned += c.n - 1 - i;
         }
     }
-    fl_vec_free(&c.seen);
-    fl_vec_free(&c.scan);
-    fl_vec_free(&c.stack);
-    gamma3_kdtree_free(&c.kd);
-    free(c.stamp);
-    free(c.limit);
-    free(c.dead);
-    free(c.killer);
-    free(c.mark);
-    free(c.by_b);
-    free(c.by_b_count);
+    ctx_free(&c);
     return st;
 }

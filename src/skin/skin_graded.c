@@ -1,5 +1,5 @@
-/* The graded skin mesher: marching tetrahedra on the Delaunay tetrahedralization of the corners
- * of an octree whose leaves are small only where the skin has small features.
+/* The graded skin mesher: marching tetrahedra on a tetrahedralization of the corners of an
+ * octree whose leaves are small only where the skin has small features.
  *
  * Why: the skin of the eps-approximation's B* (Cheng & Tan §6.2) has parts of very different
  * sizes: near a sharp vertex of the polyhedron the protecting balls shrink with the local gap
@@ -9,9 +9,9 @@
  * docs/skin.md).
  *
  * Why the result is a closed 2-manifold for every input, with no crack between leaves of
- * different sizes: the octree only supplies points; the Delaunay tetrahedralization (fl_dt3,
- * exact, symbolic tie-breaking) is one conforming triangulation of their convex hull, the root
- * cube. Each point gets one label (G < 0 or not), so the output is the level set of a
+ * different sizes: the octree only supplies points; their regular triangulation with tiny
+ * generic weights (corner_triangulation, fl_rt3, exact) is one conforming triangulation of
+ * their convex hull, the root cube. Each point gets one label (G < 0 or not), so the output is the level set of a
  * piecewise-linear interpolant at a regular value (as in the uniform mesher, skin_mesh.c),
  * and the root cube's boundary lies outside every ball, hence outside the body
  * (body^t ⊂ ∪B, §6.1), so the level set does not reach the hull. Hanging nodes do not matter:
@@ -24,7 +24,7 @@
  * half-thickness of a membrane (a triangle) and the radius of a spherical cavity (a
  * tetrahedron, w_X > 0). The wanted cell near a feature is `grade` times its size, growing by
  * half the distance away from it (a 1/2-Lipschitz size function keeps neighbouring leaves of
- * similar size, so the Delaunay tetrahedra stay reasonable). */
+ * similar size, so the tetrahedra stay reasonable). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -212,7 +212,7 @@ static fl_status build_points(octree *o, const double *xyzw, size_t n, const fl_
     return refine(o, 0, zero, 0, src->count, err);
 }
 
-/* ---- marching tetrahedra on the Delaunay tetrahedra ---- */
+/* ---- marching tetrahedra on the corner tetrahedra ---- */
 
 typedef struct dmarch {
     const fl_skin_function *g;
@@ -291,7 +291,7 @@ static int dmarch_tet(dmarch *m, const uint32_t *c)
     return dpush(m, v[0], v[2], v[3], flip);
 }
 
-static fl_status march_delaunay(dmarch *m, const fl_dt3 *dt, const fl_skin_options *o,
+static fl_status march_delaunay(dmarch *m, const fl_rt3 *dt, const fl_skin_options *o,
                                 fl_error *err)
 {
     if (map_init(&m->vert, dt->tet_count / 8 + 64))
@@ -308,17 +308,45 @@ static fl_status march_delaunay(dmarch *m, const fl_dt3 *dt, const fl_skin_optio
     return FL_OK;
 }
 
+/* A triangulation of the octree's corners. The corners are exactly degenerate for the
+ * Delaunay in-sphere test (the 8 corners of every leaf are cospherical), so fl_dt3_build
+ * decided nearly every test in exact arithmetic with its symbolic perturbation (60 % of the
+ * graded mesher's time on a 200-ball set). Any triangulation of the corners serves (the
+ * output is the level set of the PL interpolant, closed for every triangulation whose hull
+ * lies outside the balls), so the corners get tiny pseudo-random weights, at most
+ * CORNER_WEIGHT times the smallest leaf squared, and the regular triangulation of these
+ * balls is used: a generic lifting, decided by the floating-point filters. It is still exact
+ * (fl_rt3_build), so a valid triangulation of the corners' convex hull, the root cube, whose
+ * 8 corners are extreme and never hidden; a hidden inner corner is simply not used. */
+#define CORNER_WEIGHT 1e-2
+static fl_status corner_triangulation(const octree *ot, fl_rt3 *rt, fl_error *err)
+{
+    size_t n = ot->pts.count;
+    double *b = fl_alloc_array(n, 4 * sizeof(double));
+    if (!b) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    const double *p = ot->pts.data, wmax = CORNER_WEIGHT * ot->hsmall * ot->hsmall;
+    uint64_t h = 0x9e3779b97f4a7c15u;
+    for (size_t i = 0; i < n; i++) {
+        h ^= h << 13, h ^= h >> 7, h ^= h << 17; /* xorshift64: fixed seed, reproducible */
+        for (int c = 0; c < 3; c++)
+            b[4 * i + c] = p[3 * i + c];
+        b[4 * i + 3] = wmax * (double)(h >> 11) * 0x1p-53;
+    }
+    fl_status st = fl_rt3_build(b, n, NULL, rt, err);
+    free(b);
+    return st;
+}
+
 /* Labels every point (G < 0), then marches. */
 static fl_status label_and_march(dmarch *m, const octree *ot, const fl_skin_options *o,
                                  fl_error *err)
 {
-    fl_dt3 dt;
-    fl_dt3_options dopt = {0};
-    fl_status st = fl_dt3_build(ot->pts.data, ot->pts.count, &dopt, &dt, err);
+    fl_rt3 dt;
+    fl_status st = corner_triangulation(ot, &dt, err);
     if (st != FL_OK) return st;
     uint8_t *in = fl_alloc_array(ot->pts.count, 1);
     if (!in) {
-        fl_dt3_free(&dt);
+        fl_rt3_free(&dt);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     }
     for (size_t i = 0; i < ot->pts.count; i++) {
@@ -335,7 +363,7 @@ static fl_status label_and_march(dmarch *m, const octree *ot, const fl_skin_opti
     if (!st) st = march_delaunay(m, &dt, o, err);
     free(in);
     m->in = NULL;
-    fl_dt3_free(&dt);
+    fl_rt3_free(&dt);
     return st;
 }
 

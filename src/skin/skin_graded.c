@@ -11,8 +11,9 @@
  * Why the result is a closed 2-manifold for every input, with no crack between leaves of
  * different sizes: the octree only supplies points; their regular triangulation with tiny
  * generic weights (corner_triangulation, fl_rt3, exact) is one conforming triangulation of
- * their convex hull, the root cube. Each point gets one label (G < 0 or not), so the output is the level set of a
- * piecewise-linear interpolant at a regular value (as in the uniform mesher, skin_mesh.c),
+ * their convex hull, the root cube. Each point gets one label (G < 0 or not), so the output
+ * is the level set of a piecewise-linear interpolant at a regular value (as in the uniform
+ * mesher, skin_mesh.c),
  * and the root cube's boundary lies outside every ball, hence outside the body
  * (body^t ⊂ ∪B, §6.1), so the level set does not reach the hull. Hanging nodes do not matter:
  * nothing is interpolated on octree faces.

@@ -1,7 +1,8 @@
 /* Our side of the skin timing of bench/workloads/skin.sh: fl_skin_mesh of a ball file read
  * once, timed in-process like the CGAL peer (bench/peers/cgal_skin.cpp) times its mesher call.
  *
- *   ours_skin BALLS.xyzw T CELL [OUT.off]      (CELL 0: the default cell)
+ *   ours_skin BALLS.xyzw T CELL [OUT.off [GRADE]]   (CELL 0: the default cell; GRADE > 0: the
+ *                                                    graded grid, fl_skin_options.grade)
  *   RESULT seconds=<wall> cpu=<process CPU> vertices=<V> faces=<F> euler=<chi> cell=<h>
  *
  * The timed region is fl_skin_mesh with its stats (regular triangulation, mixed-complex index,
@@ -24,7 +25,7 @@ static double clock_seconds(clockid_t clock)
 int main(int argc, char **argv)
 {
     if (argc < 4) {
-        fprintf(stderr, "usage: ours_skin BALLS.xyzw T CELL [OUT.off]\n");
+        fprintf(stderr, "usage: ours_skin BALLS.xyzw T CELL [OUT.off [GRADE]]\n");
         return 1;
     }
     fl_error err;
@@ -36,6 +37,7 @@ int main(int argc, char **argv)
     fl_skin_options opt = {0};
     opt.t = atof(argv[2]);
     opt.cell = atof(argv[3]);
+    if (argc > 5) opt.grade = atof(argv[5]);
     fl_mesh mesh = {0};
     fl_skin_stats stats;
     double w0 = clock_seconds(CLOCK_MONOTONIC), c0 = clock_seconds(CLOCK_PROCESS_CPUTIME_ID);

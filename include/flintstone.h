@@ -1777,7 +1777,7 @@ typedef struct fl_skin_options {
     fl_progress_fn progress; /* may be NULL; stage "skin" */
     void *progress_user;
     double grade;      /* 0: the uniform grid above. > 0: a graded grid (octree corners,
-                        * Delaunay tetrahedra): cells of grade times the local feature size of
+                        * exactly triangulated): cells of grade times the local feature size of
                         * the skin (shrunk ball radius, neck waist, ...), at most `cell` (0: the
                         * largest shrunk radius times grade); docs/skin.md */
 } fl_skin_options;

@@ -40,11 +40,11 @@ max_dist() { # MESH POINTS.xyz
   "$fl" closest "$1" "$2" --json | sed -n 's/.*"max_distance":\([^,}]*\).*/\1/p'
 }
 
-run_case() { # NAME BALLS CELL (0: the default cell)
-  local name=$1 balls=$2 cell=$3
+run_case() { # NAME BALLS CELL (0: the default cell) [GRADE (the graded grid)]
+  local name=$1 balls=$2 cell=$3 grade=${4:-0}
   local o_times="" p_times="" o_cpus="" p_cpus="" o_line p_line
   for ((r = 0; r < BENCH_ROUNDS; r++)); do
-    o_line=$("$ours" "$balls" 0.5 "$cell" "$out/ours.off" | grep '^RESULT') ||
+    o_line=$("$ours" "$balls" 0.5 "$cell" "$out/ours.off" "$grade" | grep '^RESULT') ||
       { echo "ERROR|skin $name|ours failed"; return 0; }
     p_line=$("$peer" "$balls" 0.5 "$out/cgal.off" | grep '^RESULT') ||
       { echo "ERROR|skin $name|cgal failed"; return 0; }
@@ -83,6 +83,8 @@ for spec in "${cases[@]}"; do
   rmin=$(awk 'NR == 1 || $4 < m { m = $4 } END { printf "%.9g", sqrt(m) }' "$balls")
   run_case "$1 $2 (cell x$factor)" "$balls" "$(awk -v r="$rmin" -v f="$factor" \
     'BEGIN { printf "%.9g", f * sqrt(0.5) * r / 4 }')"
+  # the graded grid (octree sized by the local feature size, docs/skin.md); "" skips the row
+  for g in ${SKIN_GRADES-1.5}; do run_case "$1 $2 (graded grid, grade $g)" "$balls" 0 "$g"; done
 done
 
 # The epsilon mode (issue #12): `flintstone skin MESH --epsilon E --star B*` builds the verified

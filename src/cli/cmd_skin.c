@@ -36,7 +36,7 @@ static const char *usage_text =
     "  --cell H     grid spacing (default: sqrt(t) times the smallest radius / 4, smaller for\n"
     "               thin necks; with MESH: 0.4 E); features thinner than H can be missed\n"
     "  --grade G    graded grid: octree cells of G times the local feature size of the skin\n"
-    "               (shrunk radius, neck waist), at most H; Delaunay tetrahedra, crack-free.\n"
+    "               (shrunk radius, neck waist), at most H; exactly triangulated, crack-free.\n"
     "               With MESH: default uniform, then graded 2.2 when the topology is wrong\n"
     "  -o FILE      the mesh (.off .obj .ply .stl)\n"
     "  --json       --balls: balls, vertices, faces, euler, genus, closed, manifold, cell,\n"

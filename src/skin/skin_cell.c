@@ -26,9 +26,13 @@
  * neighbouring cells agree on their common boundary, G is C^1, so the value differs from G by
  * rounding-sized amounts), which also keeps two neighbours from both rejecting a boundary point. */
 #define SKIN_WALK_SLACK 1e-12
-/* Steps from the caller's start, then from the index cell's first simplex. */
+/* Steps from the caller's start, then from the index cell's first simplex. The second was 96
+ * until round 12: on sphere.off's B* (eps 0.3) 2760 walks reached it, none of them cycling
+ * (FL_SKIN_CAP_PROBE below: 2146 found their cell after 17 more steps on average, 614 gave up
+ * on a missing or shaky cell); at 256 no walk reaches the cap and the scans fall 40.6 % ->
+ * 26.3 % of the evaluations (docs/skin.md, round 12). */
 #define SKIN_WALK_NEAR 8
-#define SKIN_WALK_FAR 96
+#define SKIN_WALK_FAR 256
 
 static int key_cmp(const uint32_t *a, const uint32_t *b)
 {
@@ -90,6 +94,8 @@ enum { WHY_MISSING = SKIN_WHY_MISSING, WHY_BOX = SKIN_WHY_BOX, WHY_CAP = SKIN_WH
 #include <stdio.h>
 #include <stdlib.h>
 static _Atomic size_t stat_eval, stat_walk, stat_dropped, stat_why[16];
+/* capped walks probed on (FL_SKIN_CAP_PROBE): not ended, found the cell, gave up, cycled */
+static _Atomic size_t stat_probe[4], stat_probe_steps[4];
 static void stats_print(void)
 {
     size_t e = stat_eval, w = stat_walk;
@@ -101,6 +107,11 @@ static void stats_print(void)
                                    "sliver+degen", "all3"};
     for (int i = 0; i < 16; i++)
         if (stat_why[i]) fprintf(stderr, " %s %zu", name[i], (size_t)stat_why[i]);
+    if (stat_probe[0] + stat_probe[1] + stat_probe[2] + stat_probe[3])
+        fprintf(stderr, "; capped walks probed on: %zu unended, %zu ended in a cell (%zu more "
+                "steps), %zu gave up, %zu cycled (%zu steps)", (size_t)stat_probe[0],
+                (size_t)stat_probe[1], (size_t)stat_probe_steps[1], (size_t)stat_probe[2],
+                (size_t)stat_probe[3], (size_t)stat_probe_steps[3]);
     fprintf(stderr, "\n");
 }
 /* FL_SKIN_TRUST: SKIN_SHAKY_* bits the walk ignores (experiments of the counting build) */
@@ -259,6 +270,38 @@ static int walk(const fl_skin_function *sk, const double *x, uint32_t *cur, int 
         *cur = next;
     }
     *why = WHY_CAP;
+#ifdef FL_SKIN_WALK_STATS
+    /* FL_SKIN_CAP_PROBE=N (counting build): walk on up to N more steps from the capped walk's
+     * cell, recording every cell, to tell long walks (they end) from cycles longer than
+     * SKIN_WALK_SEEN (a cell comes back) */
+    static _Atomic long probe = -1;
+    if (probe < 0) {
+        const char *e = getenv("FL_SKIN_CAP_PROBE");
+        probe = e ? atol(e) : 0;
+    }
+    if (probe > 0 && steps > SKIN_WALK_NEAR) {
+        uint32_t *hist = malloc((size_t)probe * sizeof *hist), c = *cur;
+        long n = 0, end = 0;
+        double v;
+        int w;
+        for (; n < probe && hist; n++) {
+            uint32_t next = 0;
+            int r = cell_test(sk, c, x, &v, &next, &w);
+            if (r) {
+                end = r > 0 ? 1 : 2;
+                break;
+            }
+            for (long j = 0; j < n && !end; j++)
+                end = hist[j] == next ? 3 : 0;
+            if (end) break;
+            hist[n] = c;
+            c = next;
+        }
+        stat_probe[end]++;
+        stat_probe_steps[end] += (size_t)n;
+        free(hist);
+    }
+#endif
     return 0;
 }
 

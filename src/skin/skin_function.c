@@ -21,6 +21,9 @@
  * list hold most simplices when a few balls are large, as in the eps-approximation's B*). */
 #include <float.h>
 #include <math.h>
+#ifdef FL_SKIN_WALK_STATS
+#include <stdio.h>
+#endif
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
@@ -985,6 +988,16 @@ static fl_status function_new(const double *xyzw, size_t n, double t, int positi
     sk->dropped_count = dropped.count;
     sk->dropped = fl_vec_release(&dropped);
     sk->dropped_link_start = fl_vec_release(&dlink_start);
+#ifdef FL_SKIN_WALK_STATS
+    if (sk->dropped_count)
+        fprintf(stderr, "skin function: %zu stored simplices (%zu link entries), %zu dropped "
+                "(%zu link entries): %zu extra bytes\n", sk->simplex_count,
+                sk->link_start[sk->simplex_count], sk->dropped_count,
+                sk->dropped_link_start[sk->dropped_count] - sk->dropped_link_start[0],
+                sk->dropped_count * (sizeof(skin_light) + sizeof(size_t)) + sizeof(size_t) +
+                    (sk->dropped_link_start[sk->dropped_count] - sk->dropped_link_start[0]) *
+                        sizeof(uint32_t));
+#endif
     if (!st) st = build_index(sk, err);
     if (st) {
         fl_skin_function_free(sk);

@@ -541,7 +541,8 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
  * p = (1-t)(a - f), so z* = f + p/(1-t) = a lies in X. Listing X only near its mixed cell is
  * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
  * ball spans many simplices. */
-/* The chunks of dropped tuples: at most this many at once (160 MB). */
+/* The chunks of dropped tuples: about this many at once (168 MB; the chunks split the ball
+ * indices evenly, not the tuples). */
 #define SKIN_DROPPED_CHUNK ((size_t)1 << 23)
 
 /* The simplices of rt without a positive ball (the mesher's function drops their records) as

@@ -13,9 +13,11 @@
  * on the far side of it: drop the vertex with a negative barycentric coordinate, or add the
  * link ball b whose test fails. The mesher evaluates neighbouring points, so starting from the
  * previous point's cell the walk ends after 0-2 steps. A walk that does not end within its step
- * cap (degenerate power faces, rounding near a shared boundary) or reaches a simplex that was
- * dropped (affinely dependent centres) falls back to the candidate scan, which is correct on
- * its own; so the walk only changes the speed, never the value beyond rounding. */
+ * cap (degenerate power faces, rounding near a shared boundary), comes back to a cell it left,
+ * or cannot go round a simplex that was dropped as affinely dependent falls back to the
+ * candidate scan, which is correct on its own; so the walk only changes the speed, never the
+ * value beyond rounding. The mesher's function crosses the cells of its simplices of
+ * non-positive balls through light records (skin_light, frame recomputed on entry). */
 #include <math.h>
 #include <stdatomic.h>
 #include <stdlib.h>

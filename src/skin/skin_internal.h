@@ -164,8 +164,9 @@ int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cel
 /* skin_function_new_mesher: fl_skin_function_new keeping only the simplices with a positive
  * ball. The others (every ball of weight <= 0) have G >= 0 on their whole mixed cell
  * (G = |x - z|^2 - t w(z) there, w(z) <= max w over X <= 0), are never in the index and never
- * the minimiser of a G <= 0; a walk that reaches one falls back to the scan (skin_cell.c), whose
- * value is G where G <= 0 and >= G > 0 elsewhere. So the sign of G, its value where G <= 0 and
+ * the minimiser of a G <= 0; they keep a light record (skin_light) that the walk crosses and
+ * answers in (their quadric, >= 0; skin_cell.c). Where the walk gives up it scans, whose value
+ * is G where G <= 0 and >= G > 0 elsewhere. So the sign of G, its value where G <= 0 and
  * the zeros are those of the full function, which is all the meshers use; positive values may
  * be overestimates (fl_skin_function_value keeps every simplex). On B* of the eps-approximation
  * two thirds of the balls are negative: the npm bunny's 854378 B* balls gave ~3e7 simplices of

@@ -13,11 +13,14 @@
  * on the far side of it: drop the vertex with a negative barycentric coordinate, or add the
  * link ball b whose test fails. The mesher evaluates neighbouring points, so starting from the
  * previous point's cell the walk ends after 0-2 steps. A walk that does not end within its step
- * cap (degenerate power faces, rounding near a shared boundary) or reaches a simplex that was
- * dropped (affinely dependent centres) falls back to the candidate scan, which is correct on
- * its own; so the walk only changes the speed, never the value beyond rounding. */
+ * cap (degenerate power faces, rounding near a shared boundary), comes back to a cell it left,
+ * or cannot go round a simplex that was dropped as affinely dependent falls back to the
+ * candidate scan, which is correct on its own; so the walk only changes the speed, never the
+ * value beyond rounding. The mesher's function crosses the cells of its simplices of
+ * non-positive balls through light records (skin_light, frame recomputed on entry). */
 #include <math.h>
 #include <stdatomic.h>
+#include <stdlib.h>
 
 #include "skin/skin_internal.h"
 
@@ -25,9 +28,13 @@
  * neighbouring cells agree on their common boundary, G is C^1, so the value differs from G by
  * rounding-sized amounts), which also keeps two neighbours from both rejecting a boundary point. */
 #define SKIN_WALK_SLACK 1e-12
-/* Steps from the caller's start, then from the index cell's first simplex. */
+/* Steps from the caller's start, then from the index cell's first simplex. The second was 96
+ * until round 12: on sphere.off's B* (eps 0.3) 2760 walks reached it, none of them cycling
+ * (FL_SKIN_CAP_PROBE below: 2146 found their cell after 17 more steps on average, 614 gave up
+ * on a missing or shaky cell); at 256 no walk reaches the cap and the scans fall 40.6 % ->
+ * 26.3 % of the evaluations (docs/skin.md, round 12). */
 #define SKIN_WALK_NEAR 8
-#define SKIN_WALK_FAR 96
+#define SKIN_WALK_FAR 256
 
 static int key_cmp(const uint32_t *a, const uint32_t *b)
 {
@@ -36,7 +43,9 @@ static int key_cmp(const uint32_t *a, const uint32_t *b)
     return 0;
 }
 
-/* The simplex with balls key (sorted, padded), or UINT32_MAX when it is not in the list. */
+/* The simplex with balls key (sorted, padded): its index among the stored simplices, or
+ * simplex_count + its index among the dropped ones (the mesher's function), or UINT32_MAX when
+ * it is in neither list. */
 static uint32_t find_simplex(const fl_skin_function *sk, const uint32_t key[4])
 {
     size_t lo = 0, hi = sk->simplex_count;
@@ -49,6 +58,26 @@ static uint32_t find_simplex(const fl_skin_function *sk, const uint32_t key[4])
         else
             hi = mid;
     }
+    lo = 0;
+    hi = sk->dropped_count;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        int c = key_cmp(sk->dropped[mid].ball, key);
+        if (c == 0) return (uint32_t)(sk->simplex_count + mid);
+        if (c < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+#ifdef FL_SKIN_WALK_STATS
+    { /* the missing simplices by dimension and sign: positive ball or not */
+        extern _Atomic size_t skin_stat_missing[2][4];
+        int k = 0, pos = 0;
+        while (k < 4 && key[k] != UINT32_MAX)
+            pos |= sk->balls[4 * (size_t)key[k++] + 3] > 0;
+        if (k) skin_stat_missing[pos][k - 1]++;
+    }
+#endif
     return UINT32_MAX;
 }
 
@@ -66,25 +95,39 @@ static void neighbour_key(const skin_simplex *s, int drop, uint32_t add, uint32_
         key[m++] = UINT32_MAX;
 }
 
-/* Why a walk gave up (counted by a FL_SKIN_WALK_STATS build, skin_walk_stats): the
+/* Why a walk gave up (skin_internal.h, SKIN_WHY_*; counted by a FL_SKIN_WALK_STATS build): the
  * neighbour is not listed, the cell is shaky (+ its SKIN_SHAKY_* bits), the power-face box
- * test failed, or the step cap was reached. */
-enum { WHY_MISSING = 1, WHY_BOX = 2, WHY_CAP = 3, WHY_SHAKY = 8 };
+ * test failed, the step cap was reached, or the walk came back to a cell. */
+enum { WHY_MISSING = SKIN_WHY_MISSING, WHY_BOX = SKIN_WHY_BOX, WHY_CAP = SKIN_WHY_CAP,
+       WHY_CYCLE = SKIN_WHY_CYCLE, WHY_SHAKY = SKIN_WHY_SHAKY };
 
 #ifdef FL_SKIN_WALK_STATS
 #include <stdio.h>
 #include <stdlib.h>
-static _Atomic size_t stat_eval, stat_walk, stat_why[16];
+static _Atomic size_t stat_eval, stat_walk, stat_dropped, stat_why[16];
+_Atomic size_t skin_stat_missing[2][4];
+/* capped walks probed on (FL_SKIN_CAP_PROBE): not ended, found the cell, gave up, cycled */
+static _Atomic size_t stat_probe[4], stat_probe_steps[4];
 static void stats_print(void)
 {
     size_t e = stat_eval, w = stat_walk;
     fprintf(stderr, "skin walk stats: %zu evaluations, %zu walk answers, %zu scans (%.1f %%):",
             e, w, e - w, e ? 100.0 * (double)(e - w) / (double)e : 0.0);
-    static const char *name[16] = {"?", "missing", "box", "cap", "", "", "", "", "shaky?",
+    fprintf(stderr, " (%zu in dropped cells)", (size_t)stat_dropped);
+    static const char *name[16] = {"?", "missing", "box", "cap", "cycle", "", "", "", "shaky?",
                                    "cond", "sliver", "cond+sliver", "degen", "cond+degen",
                                    "sliver+degen", "all3"};
     for (int i = 0; i < 16; i++)
         if (stat_why[i]) fprintf(stderr, " %s %zu", name[i], (size_t)stat_why[i]);
+    fprintf(stderr, "; missing simplices (not positive / positive, k = 0..3):");
+    for (int p = 0; p < 2; p++)
+        for (int k = 0; k < 4; k++)
+            fprintf(stderr, " %zu", (size_t)skin_stat_missing[p][k]);
+    if (stat_probe[0] + stat_probe[1] + stat_probe[2] + stat_probe[3])
+        fprintf(stderr, "; capped walks probed on: %zu unended, %zu ended in a cell (%zu more "
+                "steps), %zu gave up, %zu cycled (%zu steps)", (size_t)stat_probe[0],
+                (size_t)stat_probe[1], (size_t)stat_probe_steps[1], (size_t)stat_probe[2],
+                (size_t)stat_probe[3], (size_t)stat_probe_steps[3]);
     fprintf(stderr, "\n");
 }
 /* FL_SKIN_TRUST: SKIN_SHAKY_* bits the walk ignores (experiments of the counting build) */
@@ -111,7 +154,23 @@ static unsigned trust_bits(void)
 static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, double *val,
                      uint32_t *next, int *why)
 {
-    const skin_simplex *s = &sk->simplex[id];
+    const skin_simplex *s = &sk->simplex[id < sk->simplex_count ? id : 0];
+    size_t link_lo, link_hi;
+    skin_simplex light;
+    if (id < sk->simplex_count) {
+        link_lo = sk->link_start[id];
+        link_hi = sk->link_start[id + 1];
+    } else { /* a dropped cell: its frame from the balls, as a stored record would hold it */
+        size_t j = id - sk->simplex_count;
+        if (skin_simplex_setup(sk->balls, sk->dropped[j].ball, sk->dropped[j].k, &light)) {
+            *why = WHY_MISSING;
+            return -1;
+        }
+        light.shaky |= sk->dropped[j].shaky;
+        s = &light;
+        link_lo = sk->dropped_link_start[j];
+        link_hi = sk->dropped_link_start[j + 1];
+    }
     double t = sk->t, a[3], e[3][3], f[3], d[3], et[3], mu[4], xi[3] = {0, 0, 0}, sum = 0;
     skin_frame(sk->balls, s, a, e);
     for (int c = 0; c < 3; c++)
@@ -156,7 +215,7 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
     double utl = sqrt(ut[0] * ut[0] + ut[1] * ut[1] + ut[2] * ut[2]), worst_h = 0;
     uint32_t add = UINT32_MAX, add_exact = UINT32_MAX;
     int exact = (s->shaky & SKIN_SHAKY_SLIVER) != 0;
-    for (size_t l = sk->link_start[id]; l < sk->link_start[id + 1]; l++) {
+    for (size_t l = link_lo; l < link_hi; l++) {
         const double *b = sk->balls + 4 * (size_t)sk->link[l];
         double eb[3] = {b[0] - b0[0], b[1] - b0[1], b[2] - b0[2]};
         double e2 = eb[0] * eb[0] + eb[1] * eb[1] + eb[2] * eb[2], el = sqrt(e2);
@@ -186,6 +245,24 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         neighbour_key(s, -1, add, key);
         *next = find_simplex(sk, key);
         *why = WHY_MISSING;
+        /* X + add is not listed: a flat simplex (B*'s focus balls lie in their face's plane or
+         * line; skin_simplex_setup rejects it), whose mixed cell is flat too. Step round it to
+         * one of its other faces holding add, dropping the vertex of X with the smallest
+         * barycentric coordinate of z* that gives a listed face. Only the speed depends on the
+         * path (a cell is accepted by its own tests alone), and walk() stops a path that comes
+         * back to a cell. Scans 23.1 % -> 7.1 % of the evaluations on cube.off's B* (eps 0.5),
+         * 26.3 % -> 6.2 % on sphere.off's (eps 0.3); the first listed face instead of the
+         * smallest coordinate: 9.7 % and 10.1 % (docs/skin.md, round 12). */
+        int tried = 0;
+        while (*next == UINT32_MAX && tried != (1 << (s->k + 1)) - 1) {
+            int i = -1; /* the untried vertex of X with the smallest barycentric coordinate */
+            for (int j = 0; j <= s->k; j++)
+                if (!(tried >> j & 1) && (i < 0 || mu[j] < mu[i])) i = j;
+            tried |= 1 << i;
+            uint32_t face[4];
+            neighbour_key(s, i, add, face);
+            *next = find_simplex(sk, face);
+        }
         return *next == UINT32_MAX ? -1 : 0;
     }
     if (SHAKY(s)) {
@@ -201,57 +278,117 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         }
     }
     *val = q2 - t / (1 - t) * p2 + t * skin_weight(sk->balls, s, a, f);
+    /* a dropped cell: every ball of X has weight <= 0, so G >= 0 on its whole mixed cell */
+    if (id >= sk->simplex_count && !(*val >= 0)) *val = 0;
     return 1;
 }
 
-/* Walks from *cur for at most steps cells; 1 with *val when the cell of x was found. */
+/* Walks from *cur for at most steps cells; 1 with *val when the cell of x was found. A walk
+ * that comes back to one of the last SKIN_WALK_SEEN cells it left is going round in circles
+ * (the tests of neighbouring cells contradict each other by rounding): it gives up at once. */
+#define SKIN_WALK_SEEN 8
 static int walk(const fl_skin_function *sk, const double *x, uint32_t *cur, int steps,
                 double *val, int *why)
 {
-    *why = WHY_CAP;
+    uint32_t seen[SKIN_WALK_SEEN];
     for (int i = 0; i < steps; i++) {
         uint32_t next = 0;
         int r = cell_test(sk, *cur, x, val, &next, why);
         if (r) return r > 0;
+        seen[i % SKIN_WALK_SEEN] = *cur;
+        for (int j = 0; j <= i && j < SKIN_WALK_SEEN; j++)
+            if (seen[j] == next) {
+                *why = WHY_CYCLE;
+                return 0;
+            }
         *cur = next;
     }
     *why = WHY_CAP;
+#ifdef FL_SKIN_WALK_STATS
+    /* FL_SKIN_CAP_PROBE=N (counting build): walk on up to N more steps from the capped walk's
+     * cell, recording every cell, to tell long walks (they end) from cycles longer than
+     * SKIN_WALK_SEEN (a cell comes back) */
+    static _Atomic long probe = -1;
+    if (probe < 0) {
+        const char *e = getenv("FL_SKIN_CAP_PROBE");
+        probe = e ? atol(e) : 0;
+    }
+    if (probe > 0 && steps > SKIN_WALK_NEAR) {
+        uint32_t *hist = malloc((size_t)probe * sizeof *hist), c = *cur;
+        long n = 0, end = 0;
+        double v;
+        int w;
+        for (; n < probe && hist; n++) {
+            uint32_t next = 0;
+            int r = cell_test(sk, c, x, &v, &next, &w);
+            if (r) {
+                end = r > 0 ? 1 : 2;
+                break;
+            }
+            for (long j = 0; j < n && !end; j++)
+                end = hist[j] == next ? 3 : 0;
+            if (end) break;
+            hist[n] = c;
+            c = next;
+        }
+        stat_probe[end]++;
+        stat_probe_steps[end] += (size_t)n;
+        free(hist);
+    }
+#endif
     return 0;
 }
 
-uint32_t skin_locate(const fl_skin_function *sk, const double x[3], uint32_t *start, double *val)
+/* The cell found (*start updated to it): a stored simplex's index, or SKIN_NO_CELL with
+ * *why = SKIN_WHY_DROPPED for a dropped one (callers read stored records of the cells returned:
+ * skin_root.c), *val its quadric. */
+static uint32_t found(const fl_skin_function *sk, uint32_t cur, uint32_t *start, int *why)
+{
+    *start = cur;
+    *why = 0; /* a first walk that gave up may have set it */
+    if (cur < sk->simplex_count) return cur;
+#ifdef FL_SKIN_WALK_STATS
+    stat_dropped++;
+#endif
+    *why = SKIN_WHY_DROPPED;
+    return SKIN_NO_CELL;
+}
+
+uint32_t skin_locate_why(const fl_skin_function *sk, const double x[3], uint32_t *start,
+                         double *val, int *why)
 {
     *val = HUGE_VAL;
+    *why = -1;
     if (!sk->walkable || sk->simplex_count == 0) {
         *val = skin_value_scan(sk, x);
         return SKIN_NO_CELL;
     }
     if (!(fabs(x[0]) <= 1e150 && fabs(x[1]) <= 1e150 && fabs(x[2]) <= 1e150)) return SKIN_NO_CELL;
-    uint32_t cur = *start < sk->simplex_count ? *start : 0;
-    int why = 0;
+    uint32_t cur = *start < sk->simplex_count + sk->dropped_count ? *start : 0;
 #ifdef FL_SKIN_WALK_STATS
     (void)trust_bits();
     stat_eval++;
     stat_walk++;
 #endif
-    if (walk(sk, x, &cur, SKIN_WALK_NEAR, val, &why)) {
-        *start = cur;
-        return cur;
-    }
+    *why = 0;
+    if (walk(sk, x, &cur, SKIN_WALK_NEAR, val, why)) return found(sk, cur, start, why);
     /* a far start: restart next to x from the index (or go on walking outside it) */
     size_t cell = 0;
     if (skin_index_cell(sk, x, &cell) && sk->cell_start[cell] < sk->cell_start[cell + 1])
         cur = sk->cell_item[sk->cell_start[cell]];
-    if (walk(sk, x, &cur, SKIN_WALK_FAR, val, &why)) {
-        *start = cur;
-        return cur;
-    }
+    if (walk(sk, x, &cur, SKIN_WALK_FAR, val, why)) return found(sk, cur, start, why);
 #ifdef FL_SKIN_WALK_STATS
     stat_walk--;
-    stat_why[why & 15]++;
+    stat_why[*why & 15]++;
 #endif
     *val = skin_value_scan(sk, x);
     return SKIN_NO_CELL;
+}
+
+uint32_t skin_locate(const fl_skin_function *sk, const double x[3], uint32_t *start, double *val)
+{
+    int why;
+    return skin_locate_why(sk, x, start, val, &why);
 }
 
 double skin_value_walk(const fl_skin_function *sk, const double x[3], uint32_t *start)

@@ -21,6 +21,9 @@
  * list hold most simplices when a few balls are large, as in the eps-approximation's B*). */
 #include <float.h>
 #include <math.h>
+#ifdef FL_SKIN_WALK_STATS
+#include <stdio.h>
+#endif
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
@@ -73,7 +76,7 @@ static int invert_gram(int k, const double g[3][3], double inv[3][3])
 }
 
 /* Fills s for the balls idx[0..k] (k+1 balls). Returns -1 for affinely dependent centres. */
-static int simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simplex *s)
+int skin_simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simplex *s)
 {
     const double *b0 = xyzw + 4 * (size_t)idx[0];
     memset(s, 0, sizeof *s);
@@ -176,6 +179,8 @@ void fl_skin_function_free(fl_skin_function *skin)
     free(skin->balls);
     free(skin->link_start);
     free(skin->link);
+    free(skin->dropped);
+    free(skin->dropped_link_start);
     free(skin->hint);
     free(skin);
 }
@@ -219,7 +224,7 @@ static int add_simplex(fl_vec *v, const double *xyzw, const uint32_t *idx, int k
                        const double *nu_lo, const double *nu_hi)
 {
     skin_simplex s;
-    if (simplex_setup(xyzw, idx, k, &s)) return 0; /* affinely dependent: never a minimiser */
+    if (skin_simplex_setup(xyzw, idx, k, &s)) return 0; /* affinely dependent: never a minimiser */
     s.box_exact = nu_lo != NULL;
     for (int c = 0; nu_lo && c < 3; c++) {
         s.nu_lo[c] = nu_lo[c];
@@ -343,20 +348,49 @@ static size_t positive_faces(const double *xyzw, const uint32_t *v, int nv)
     return ((size_t)1 << nv) - ((size_t)1 << neg);
 }
 
+/* The number of faces of the nv balls v without a positive ball whose smallest ball lies in
+ * [lo, hi) (the dropped simplices of one chunk, rt_tuples' mode TUPLES_DROPPED). */
+static size_t dropped_faces(const double *xyzw, const uint32_t *v, int nv, uint32_t lo,
+                            uint32_t hi)
+{
+    size_t count = 0;
+    for (uint32_t mask = 1; mask < (1u << nv); mask++) {
+        uint32_t least = UINT32_MAX;
+        int pos = 0;
+        for (int i = 0; i < nv; i++)
+            if (mask >> i & 1) {
+                pos |= xyzw[4 * (size_t)v[i] + 3] > 0;
+                least = v[i] < least ? v[i] : least;
+            }
+        count += !pos && least >= lo && least < hi;
+    }
+    return count;
+}
+
+enum { TUPLES_ALL, TUPLES_POSITIVE, TUPLES_DROPPED };
+
 /* The tuples of rt: the 15 faces of every tetrahedron and the 7 faces of every hull face; with
- * positive_only, only the faces with a positive ball (skin_function_new_mesher). */
-static rt_tuple *rt_tuples(const fl_rt3 *rt, const double *xyzw, int positive_only,
-                           size_t *count)
+ * TUPLES_POSITIVE, only the faces with a positive ball (skin_function_new_mesher); with
+ * TUPLES_DROPPED only the others whose smallest ball lies in [lo, hi) (in chunks: all 9e7
+ * tuples of B* of the bunny would be 1.8 GB). */
+static rt_tuple *rt_tuples(const fl_rt3 *rt, const double *xyzw, int mode, uint32_t lo,
+                           uint32_t hi, size_t *count)
 {
     size_t n15 = rt->tet_count * 15, n7 = rt->hull_face_count * 7;
     if (n15 / 15 != rt->tet_count || n15 + n7 < n15) return NULL;
     size_t total = n15 + n7;
-    if (positive_only) { /* count first: all tuples of B* of the bunny would be 1.8 GB */
+    if (mode == TUPLES_POSITIVE) { /* count first: all tuples of B* of the bunny are 1.8 GB */
         total = 0;
         for (size_t q = 0; q < rt->tet_count; q++)
             total += positive_faces(xyzw, rt->tet + 4 * q, 4);
         for (size_t q = 0; q < rt->hull_face_count; q++)
             total += positive_faces(xyzw, rt->hull_faces + 3 * q, 3);
+    } else if (mode == TUPLES_DROPPED) {
+        total = 0;
+        for (size_t q = 0; q < rt->tet_count; q++)
+            total += dropped_faces(xyzw, rt->tet + 4 * q, 4, lo, hi);
+        for (size_t q = 0; q < rt->hull_face_count; q++)
+            total += dropped_faces(xyzw, rt->hull_faces + 3 * q, 3, lo, hi);
     }
     rt_tuple *tup = fl_alloc_array(total + 1, sizeof(rt_tuple));
     if (!tup) return NULL;
@@ -375,7 +409,10 @@ static rt_tuple *rt_tuples(const fl_rt3 *rt, const double *xyzw, int positive_on
                 for (int i = k; i < 4; i++)
                     u->v[i] = UINT32_MAX;
                 u->src = pass ? RT_HULL | (uint32_t)q : (uint32_t)q;
-                if (positive_only && !has_positive_ball(xyzw, u->v)) m--;
+                if ((mode == TUPLES_POSITIVE && !has_positive_ball(xyzw, u->v)) ||
+                    (mode == TUPLES_DROPPED &&
+                     (has_positive_ball(xyzw, u->v) || u->v[0] < lo || u->v[0] >= hi)))
+                    m--;
             }
     }
     *count = m;
@@ -429,6 +466,13 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
     for (size_t q = i; q < j; q++) /* the finite vertices */
         if (TUPLE_TET(tup + q) != UINT32_MAX) {
             const double *o = vor + 4 * (size_t)TUPLE_TET(tup + q);
+            /* a sliver's vertex is not computed (voronoi_vertex leaves o[0..2] unset): until
+             * round 12 the faces of slivers came here and read those uninitialised coordinates,
+             * so their flag depended on what the heap held (found by valgrind). They are no
+             * longer tested (rt_simplices): their link tests are decided exactly wherever they
+             * accept (skin_cell.c), and the exact tests bound nu_X itself, degenerate or not
+             * (docs/skin.md, round 11), so a wedge made by rounding cannot accept x. */
+            if (!(o[3] >= 0)) continue;
             if (np == MAXP) return 1;
             pad = fmax(pad, o[3]);
             for (int c = 0; c < 3; c++)
@@ -497,8 +541,69 @@ static int nu_degenerate(const rt_tuple *tup, size_t i, size_t j, const double *
  * p = (1-t)(a - f), so z* = f + p/(1-t) = a lies in X. Listing X only near its mixed cell is
  * what keeps the lists short: a grid cell meets a few mixed cells, whereas the reach of a large
  * ball spans many simplices. */
-static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const double *xyzw,
-                              size_t n, int positive_only, fl_error *err)
+/* The chunks of dropped tuples: about this many at once (168 MB; the chunks split the ball
+ * indices evenly, not the tuples). */
+#define SKIN_DROPPED_CHUNK ((size_t)1 << 23)
+
+/* The simplices of rt without a positive ball (the mesher's function drops their records) as
+ * light records (skin_light: key, SKIN_SHAKY_* bits) with their links appended to link, in key
+ * order, in chunks of the smallest ball's index so that their tuples never all exist at once.
+ * stored: the number of full records (the walk numbers the light ones after them, in 32 bits).
+ * -1 when out of memory. */
+static int dropped_simplices(fl_vec *dropped, fl_vec *dlink_start, fl_vec *link, const fl_rt3 *rt,
+                             const double *vor, const double *xyzw, size_t n, size_t stored)
+{
+    size_t total = 0;
+    for (size_t q = 0; q < rt->tet_count; q++)
+        total += dropped_faces(xyzw, rt->tet + 4 * q, 4, 0, UINT32_MAX);
+    for (size_t q = 0; q < rt->hull_face_count; q++)
+        total += dropped_faces(xyzw, rt->hull_faces + 3 * q, 3, 0, UINT32_MAX);
+    /* the walk's cell numbers are 32 bits with UINT32_MAX for none: without room for the
+     * dropped simplices the walk scans where it reaches one, as before */
+    if (total == 0 || stored + total >= UINT32_MAX - 1) return 0;
+    size_t chunks = total / SKIN_DROPPED_CHUNK + 1;
+    size_t first = link->count; /* the dropped links follow the stored ones */
+    if (fl_vec_push(dlink_start, &first, 1)) return -1;
+    for (size_t c = 0; c < chunks; c++) {
+        uint32_t lo = (uint32_t)(n * c / chunks), hi = (uint32_t)(n * (c + 1) / chunks);
+        size_t m = 0;
+        rt_tuple *tup = rt_tuples(rt, xyzw, TUPLES_DROPPED, lo, hi, &m);
+        if (!tup) return -1;
+        qsort(tup, m, sizeof(rt_tuple), cmp_tuple);
+        for (size_t i = 0, j; i < m; i = j) {
+            int sliver = 0;
+            for (j = i; j < m && !cmp_tuple(tup + i, tup + j); j++) {
+                uint32_t tet = TUPLE_TET(tup + j);
+                sliver |= tet != UINT32_MAX && !(vor[4 * (size_t)tet + 3] >= 0);
+            }
+            int k = 0;
+            while (k < 4 && tup[i].v[k] != UINT32_MAX)
+                k++;
+            skin_simplex full;
+            if (skin_simplex_setup(xyzw, tup[i].v, k - 1, &full)) continue; /* never crossed */
+            skin_light l;
+            memset(&l, 0, sizeof l);
+            memcpy(l.ball, tup[i].v, sizeof l.ball);
+            l.k = (uint8_t)(k - 1);
+            l.shaky = (uint8_t)(full.shaky | (sliver ? SKIN_SHAKY_SLIVER : 0) |
+                                (k - 1 < 3 && !sliver &&
+                                         nu_degenerate(tup, i, j, vor, rt, xyzw, 4 - k)
+                                     ? SKIN_SHAKY_DEGEN
+                                     : 0));
+            if (fl_vec_push(dropped, &l, 1) || simplex_link(link, tup, i, j, rt->tet) ||
+                fl_vec_push(dlink_start, &link->count, 1)) {
+                free(tup);
+                return -1;
+            }
+        }
+        free(tup);
+    }
+    return 0;
+}
+
+static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, fl_vec *dropped,
+                              fl_vec *dlink_start, const double *xyzw, size_t n,
+                              int positive_only, fl_error *err)
 {
     fl_rt3 rt;
     fl_status st = fl_rt3_build(xyzw, n, NULL, &rt, err);
@@ -514,7 +619,8 @@ static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const
         return fl_fail(err, FL_ERR_INPUT, NULL, -1, "skin: too many tetrahedra (%zu)", tets);
     }
     size_t m = 0;
-    rt_tuple *tup = rt_tuples(&rt, xyzw, positive_only, &m);
+    rt_tuple *tup = rt_tuples(&rt, xyzw, positive_only ? TUPLES_POSITIVE : TUPLES_ALL, 0,
+                              UINT32_MAX, &m);
     double *vor = fl_alloc_array(rt.tet_count + 1, 4 * sizeof(double));
     if (!tup || !vor) goto nomem;
     for (size_t i = 0; i < rt.tet_count; i++)
@@ -560,13 +666,22 @@ static fl_status rt_simplices(fl_vec *v, fl_vec *link, fl_vec *link_start, const
         if (v->count == before) continue; /* dropped (affinely dependent): no link either */
         ((skin_simplex *)v->data)[before].shaky |=
             (uint8_t)((sliver ? SKIN_SHAKY_SLIVER : 0) |
-                      (k - 1 < 3 && nu_degenerate(tup, i, j, vor, &rt, xyzw, 4 - k)
+                      (k - 1 < 3 && !sliver && nu_degenerate(tup, i, j, vor, &rt, xyzw, 4 - k)
                            ? SKIN_SHAKY_DEGEN
                            : 0));
         if (simplex_link(link, tup, i, j, rt.tet) || fl_vec_push(link_start, &link->count, 1))
             goto nomem;
     }
     free(tup);
+    tup = NULL;
+    /* out of memory for the light records (4 % of the stored records' bytes on sphere.off's
+     * B*; ~0.4 GB for the npm bunny, docs/skin.md round 12): go on without them, the walk then
+     * scans where it reaches a dropped cell, as before round 12 */
+    if (positive_only && dropped_simplices(dropped, dlink_start, link, &rt, vor, xyzw, n, v->count)) {
+        fl_vec_free(dropped);
+        fl_vec_free(dlink_start);
+        link->count = ((const size_t *)link_start->data)[link_start->count - 1];
+    }
     free(vor);
     fl_rt3_free(&rt);
     return FL_OK;
@@ -849,10 +964,12 @@ static fl_status function_new(const double *xyzw, size_t n, double t, int positi
     if (!sk) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     sk->t = t;
     sk->wmax = wmax;
-    fl_vec v, link, link_start;
+    fl_vec v, link, link_start, dropped, dlink_start;
     fl_vec_init(&v, sizeof(skin_simplex));
     fl_vec_init(&link, sizeof(uint32_t));
     fl_vec_init(&link_start, sizeof(size_t));
+    fl_vec_init(&dropped, sizeof(skin_light));
+    fl_vec_init(&dlink_start, sizeof(size_t));
     fl_status st = FL_OK;
     /* the simplices' frames are read from the balls (skin_frame), the walk reads the balls of
      * the link; one word of shared hint (skin_cell.c) */
@@ -867,13 +984,27 @@ static fl_status function_new(const double *xyzw, size_t n, double t, int positi
     if (!st && n <= 8) {
         if (subsets(&v, xyzw, n)) st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     } else if (!st) {
-        st = rt_simplices(&v, &link, &link_start, xyzw, n, positive_only, err);
+        st = rt_simplices(&v, &link, &link_start, &dropped, &dlink_start, xyzw, n, positive_only,
+                          err);
         sk->walkable = !st;
     }
     sk->simplex_count = v.count;
     sk->simplex = fl_vec_release(&v);
     sk->link = fl_vec_release(&link);
     sk->link_start = fl_vec_release(&link_start);
+    sk->dropped_count = dropped.count;
+    sk->dropped = fl_vec_release(&dropped);
+    sk->dropped_link_start = fl_vec_release(&dlink_start);
+#ifdef FL_SKIN_WALK_STATS
+    if (sk->dropped_count)
+        fprintf(stderr, "skin function: %zu stored simplices (%zu link entries), %zu dropped "
+                "(%zu link entries): %zu extra bytes\n", sk->simplex_count,
+                sk->link_start[sk->simplex_count], sk->dropped_count,
+                sk->dropped_link_start[sk->dropped_count] - sk->dropped_link_start[0],
+                sk->dropped_count * (sizeof(skin_light) + sizeof(size_t)) + sizeof(size_t) +
+                    (sk->dropped_link_start[sk->dropped_count] - sk->dropped_link_start[0]) *
+                        sizeof(uint32_t));
+#endif
     if (!st) st = build_index(sk, err);
     if (st) {
         fl_skin_function_free(sk);

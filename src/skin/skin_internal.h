@@ -51,6 +51,19 @@ typedef struct skin_simplex {
 /* The bits that make the walk give up on a cell: a face of a sliver (SKIN_SHAKY_SLIVER) is
  * walked, its link tests decided exactly inside their rounding band (skin_link_sign_exact). */
 #define SKIN_SHAKY_GIVE_UP (SKIN_SHAKY_COND | SKIN_SHAKY_DEGEN)
+/* A simplex the mesher's function does not store in full (every ball of weight <= 0, so G >= 0
+ * on its whole mixed cell; skin_function_new_mesher): only what the walk needs to cross its
+ * mixed cell. The frame, Gram inverse and focus are recomputed from the balls when the walk
+ * enters it (skin_simplex_setup, the same operations as for a stored record), its link is a
+ * range of fl_skin_function.link (dropped_link_start). 20 bytes instead of 168 + 8. */
+typedef struct skin_light {
+    uint32_t ball[4]; /* sorted, UINT32_MAX padding */
+    uint8_t k;
+    uint8_t shaky; /* SKIN_SHAKY_* bits, as for a stored simplex */
+} skin_light;
+/* Fills s (frame data, SKIN_SHAKY_COND; no power-face box) for the balls idx[0..k], sorted;
+ * -1 for affinely dependent centres (skin_function.c). */
+int skin_simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simplex *s);
 /* skin_exact.c: the exact sign of the walk's link test of ball b for simplex s (k <= 2) at x,
  * i.e. of pi_b(v) - pi_X(v) with v = f + q / t (skin_cell.c): -1, 0 or 1; 2 when it cannot
  * be decided (k = 3, inputs beyond its integer range, out of memory). */
@@ -128,6 +141,12 @@ struct fl_skin_function {
     double *balls; /* a copy of the input (every path: the simplices' frames are read from it) */
     size_t *link_start;
     uint32_t *link;
+    /* The mesher's function only (skin_function_new_mesher): the simplices it does not store,
+     * sorted by ball[], with their links (link[dropped_link_start[j] ..
+     * dropped_link_start[j + 1]]). The walk numbers them simplex_count + j (skin_cell.c). */
+    size_t dropped_count;
+    skin_light *dropped;
+    size_t *dropped_link_start;
     _Atomic uint32_t *hint;
 };
 
@@ -145,8 +164,9 @@ int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cel
 /* skin_function_new_mesher: fl_skin_function_new keeping only the simplices with a positive
  * ball. The others (every ball of weight <= 0) have G >= 0 on their whole mixed cell
  * (G = |x - z|^2 - t w(z) there, w(z) <= max w over X <= 0), are never in the index and never
- * the minimiser of a G <= 0; a walk that reaches one falls back to the scan (skin_cell.c), whose
- * value is G where G <= 0 and >= G > 0 elsewhere. So the sign of G, its value where G <= 0 and
+ * the minimiser of a G <= 0; they keep a light record (skin_light) that the walk crosses and
+ * answers in (their quadric, >= 0; skin_cell.c). Where the walk gives up it scans, whose value
+ * is G where G <= 0 and >= G > 0 elsewhere. So the sign of G, its value where G <= 0 and
  * the zeros are those of the full function, which is all the meshers use; positive values may
  * be overestimates (fl_skin_function_value keeps every simplex). On B* of the eps-approximation
  * two thirds of the balls are negative: the npm bunny's 854378 B* balls gave ~3e7 simplices of
@@ -170,6 +190,16 @@ fl_status skin_function_new_mesher(const double *xyzw, size_t n, double t,
  * skin_hand_over: moves the vertex (double[3]) and triangle (uint32_t[3]) vectors into out. */
 #define SKIN_NO_CELL UINT32_MAX
 uint32_t skin_locate(const fl_skin_function *sk, const double x[3], uint32_t *start, double *val);
+/* skin_locate with *why: 0 when the walk answered in a stored cell, SKIN_WHY_DROPPED when it
+ * answered in a dropped cell (G >= 0 there; SKIN_NO_CELL is returned, *val is the cell's
+ * quadric), else why it gave up and scanned: SKIN_WHY_MISSING (a neighbour not listed at all),
+ * SKIN_WHY_BOX, SKIN_WHY_CAP (the step cap), SKIN_WHY_CYCLE (the walk came back to a cell it
+ * had left: rounding ping-pong), or SKIN_WHY_SHAKY | the cell's SKIN_SHAKY_* bits; -1 when the
+ * function is not walkable or x is not finite. */
+enum { SKIN_WHY_MISSING = 1, SKIN_WHY_BOX = 2, SKIN_WHY_CAP = 3, SKIN_WHY_CYCLE = 4,
+       SKIN_WHY_DROPPED = 5, SKIN_WHY_SHAKY = 8 };
+uint32_t skin_locate_why(const fl_skin_function *sk, const double x[3], uint32_t *start,
+                         double *val, int *why);
 void skin_edge_root(const fl_skin_function *g, const double a[3], const double b[3], uint32_t ca,
                     uint32_t cb, uint32_t *hint, double x[3], size_t *evaluations);
 double skin_vertex_offset(const fl_skin_function *g, const double *xyz, size_t count, double h,

@@ -16,6 +16,12 @@
  *    either is <= 0, answers inside the faces of slivers (their link tests decided exactly,
  *    skin_link_sign_exact) and scans for fewer than 30 % of the queries (83 % when the faces
  *    of slivers made the walk give up, round 10);
+ *  - on B* of the cube and of a geodesic sphere the mesher's walk also crosses the dropped
+ *    cells of non-positive balls (round 12): it answers in them, with the full function's
+ *    (fl_skin_function_new) walk value there and >= 0, goes round the flat simplices it cannot
+ *    enter (almost no walk stops at a missing neighbour) and scans for fewer than 5 % (cube)
+ *    and 10 % (sphere) of the queries (8.7 % and 28 % with the dropped cells skipped, 8.7 %
+ *    and 13 % without going round);
  *  - skin_link_sign_exact agrees with the floating-point link test wherever that one is far
  *    from 0, and with a recomputation in shifted coordinates (translation by a power of two:
  *    the same exact value) everywhere. */
@@ -184,34 +190,61 @@ static void test_degenerate_sets_walk_equals_scan(void)
     CHECK_MSG(neg > 200, "%d negative", neg);
 }
 
+/* What the walk did on the mesher's function (mesher_walk_vs_scan): answers from faces of
+ * slivers, answers from dropped cells (simplices of non-positive balls, skin_light), queries
+ * left to the scan, and of those the ones that met a neighbour in neither list. */
+typedef struct walk_counts {
+    int in_sliver, in_dropped, scans, missing;
+    int dropped_checked; /* in_dropped answers equal to the full function's walk */
+} walk_counts;
+
 /* Walk against scan on the mesher's function of b at q_count points near the positive balls
- * (steps as the mesher's neighbouring grid points); *in_sliver: answers from faces of
- * slivers, *scans: queries the walk left to the scan. */
-static void mesher_walk_vs_scan(const double *b, size_t n, int q_count, int *in_sliver,
-                                int *scans)
+ * (steps as the mesher's neighbouring grid points): equal wherever either is <= 0, the same
+ * sign everywhere, and the walk never above the scan (which overestimates positive values
+ * where the minimiser is a dropped simplex). In a dropped cell the walk's value must also be
+ * >= 0 and equal to the full function's (every simplex stored, fl_skin_function_new) walk. */
+static void mesher_walk_vs_scan(const double *b, size_t n, int q_count, walk_counts *wc)
 {
-    fl_skin_function *g = NULL;
+    fl_skin_function *g = NULL, *full = NULL;
     fl_error err;
-    *in_sliver = *scans = 0;
+    *wc = (walk_counts){0};
+    CHECK_STATUS(fl_skin_function_new(b, n, 0.5, &full, &err), FL_OK, &err);
+    if (!full) return;
     CHECK_STATUS(skin_function_new_mesher(b, n, 0.5, &g, &err), FL_OK, &err);
     if (!g) return;
     CHECK(g->walkable);
     size_t npos = 0, *pos = malloc(n * sizeof *pos);
     for (size_t i = 0; i < n; i++)
         if (b[4 * i + 3] > 0) pos[npos++] = i;
-    uint32_t start = 0;
+    uint32_t start = 0, fstart = 0;
     double x[3] = {0, 0, 0};
-    int bad = 0, negatives = 0;
+    int bad = 0, negatives = 0, bad_dropped = 0;
     for (int q = 0; q < q_count; q++) {
         const double *c = b + 4 * pos[(size_t)(rnd() * (double)npos)];
         double r = sqrt(c[3]);
         for (int k = 0; k < 3; k++)
             x[k] = q % 40 == 0 ? c[k] + r * (2 * rnd() - 1) : x[k] + 0.05 * r * (2 * rnd() - 1);
         double w;
-        uint32_t cell = skin_locate(g, x, &start, &w);
+        int why = 0;
+        uint32_t cell = skin_locate_why(g, x, &start, &w, &why);
         double s = skin_value_scan(g, x);
-        *scans += cell == SKIN_NO_CELL;
-        *in_sliver += cell != SKIN_NO_CELL && (g->simplex[cell].shaky & SKIN_SHAKY_SLIVER);
+        wc->scans += why != 0 && why != SKIN_WHY_DROPPED;
+        wc->missing += why == SKIN_WHY_MISSING;
+        wc->in_dropped += why == SKIN_WHY_DROPPED;
+        wc->in_sliver += cell != SKIN_NO_CELL && (g->simplex[cell].shaky & SKIN_SHAKY_SLIVER);
+        if (why == SKIN_WHY_DROPPED) {
+            /* the full function's walk gives G; where it scans, an upper bound (its index
+             * lists the simplices with a positive ball only) */
+            double want;
+            int fwhy = 0;
+            skin_locate_why(full, x, &fstart, &want, &fwhy);
+            double tol = 1e-9 * (1 + fabs(want));
+            int ok = w >= 0 && (fwhy == 0 ? fabs(w - want) <= tol : w <= want + tol);
+            wc->dropped_checked += fwhy == 0;
+            if (!ok && bad_dropped++ < 3)
+                CHECK_MSG(0, "dropped cell at (%.17g, %.17g, %.17g): walk %.17g, full function "
+                          "%.17g (%s)", x[0], x[1], x[2], w, want, fwhy ? "scan" : "walk");
+        }
         negatives += s < 0;
         int ok = s <= 0 || w <= 0 ? fabs(w - s) <= 1e-9 * (1 + fabs(s))
                                   : w <= s + 1e-9 * (1 + fabs(s));
@@ -220,9 +253,11 @@ static void mesher_walk_vs_scan(const double *b, size_t n, int q_count, int *in_
                       s);
     }
     CHECK_MSG(bad == 0, "%d of %d walk values differ from the scan", bad, q_count);
+    CHECK_MSG(bad_dropped == 0, "%d values in dropped cells differ from G", bad_dropped);
     CHECK_MSG(negatives > q_count / 10, "%d negative", negatives);
     free(pos);
     fl_skin_function_free(g);
+    fl_skin_function_free(full);
 }
 
 static void test_bstar_of_cube_walks_through_slivers(void)
@@ -234,19 +269,35 @@ static void test_bstar_of_cube_walks_through_slivers(void)
     fl_skin_approx a;
     fl_error err;
     CHECK_STATUS(fl_skin_approx_build(&m, 0.5, &o, &a, &err), FL_OK, &err);
-    int in_sliver = 0, scans = 0, q = 6000;
-    mesher_walk_vs_scan(a.star.xyzw, a.star.count, q, &in_sliver, &scans);
-    CHECK_MSG(in_sliver > q / 20, "cube B* (%zu balls): %d answers in faces of slivers",
-              a.star.count, in_sliver);
-    CHECK_MSG(scans < q * 3 / 10, "cube B*: %d of %d queries scanned", scans, q);
+    int q = 6000;
+    walk_counts wc;
+    mesher_walk_vs_scan(a.star.xyzw, a.star.count, q, &wc);
+    CHECK_MSG(wc.in_sliver > q / 20, "cube B* (%zu balls): %d answers in faces of slivers",
+              a.star.count, wc.in_sliver);
+    CHECK_MSG(wc.scans < q / 20, "cube B*: %d of %d queries scanned", wc.scans, q);
+    /* the walk crosses the dropped cells (it scanned at 762 of these 6000 points when it gave
+     * up at them, round 11) */
+    /* and round the flat simplices it cannot enter (skin_cell.c; 520 scans and 346 stopped by
+     * a missing neighbour without) */
+    CHECK_MSG(wc.in_dropped > q / 50 && wc.missing <= q / 100, "cube B*: %d answers in dropped "
+              "cells, %d walks stopped by a missing neighbour", wc.in_dropped, wc.missing);
+    printf("cube B*: %d of %d scanned, %d in dropped cells (%d equal to the full function's "
+           "walk), %d in faces of slivers\n", wc.scans, q, wc.in_dropped, wc.dropped_checked,
+           wc.in_sliver);
     fl_skin_approx_free(&a);
 }
 
 /* A geodesic sphere (icosahedron split once, radius 1) with positive balls of random radii
  * at its vertices and one at the centre, and negative balls at the foci of its triangles and
  * edges (the point of the face's plane / line with equal power to its balls): every triangle's
- * focus and its edges' foci are coplanar, as B*'s focus balls are. */
-static size_t focus_sphere(double *b)
+ * focus and its edges' foci are coplanar, as B*'s focus balls are. The geodesic sphere itself
+ * (42 unit vertices, 80 triangles oriented outward) into geo when not NULL. */
+typedef struct geodesic {
+    double xyz[42 * 3];
+    uint32_t tri[80 * 3];
+} geodesic;
+
+static size_t focus_sphere(double *b, geodesic *geo)
 {
     static const double ico[12][3] = {{0, 1, 1.618}, {0, -1, 1.618}, {0, 1, -1.618},
         {0, -1, -1.618}, {1, 1.618, 0}, {-1, 1.618, 0}, {1, -1.618, 0}, {-1, -1.618, 0},
@@ -287,6 +338,25 @@ static size_t focus_sphere(double *b)
         for (int s = 0; s < 4; s++, nt++)
             for (int c = 0; c < 3; c++)
                 tri[nt][c] = sub[s][c];
+    }
+    for (int f = 0; geo && f < nt; f++) { /* outward: (v1 - v0) x (v2 - v0) . v0 > 0 */
+        const double *p0 = v[tri[f][0]], *p1 = v[tri[f][1]], *p2 = v[tri[f][2]];
+        double u[3], w[3];
+        for (int c = 0; c < 3; c++) {
+            u[c] = p1[c] - p0[c];
+            w[c] = p2[c] - p0[c];
+        }
+        double nx = u[1] * w[2] - u[2] * w[1], ny = u[2] * w[0] - u[0] * w[2];
+        double nz = u[0] * w[1] - u[1] * w[0];
+        int flip = nx * p0[0] + ny * p0[1] + nz * p0[2] < 0;
+        geo->tri[3 * f] = (uint32_t)tri[f][0];
+        geo->tri[3 * f + 1] = (uint32_t)tri[f][flip ? 2 : 1];
+        geo->tri[3 * f + 2] = (uint32_t)tri[f][flip ? 1 : 2];
+    }
+    for (int i = 0; geo && i < nv; i++) {
+        double l = sqrt(v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+        for (int c = 0; c < 3; c++)
+            geo->xyz[3 * i + c] = v[i][c] / l;
     }
     size_t n = 0;
     for (int i = 0; i < nv; i++, n++) { /* radius 1, ball radius 0.45..0.6 */
@@ -347,12 +417,49 @@ static size_t focus_sphere(double *b)
 static void test_focus_sphere_walks_through_slivers(void)
 {
     static double b[4 * 400];
-    size_t n = focus_sphere(b);
-    int in_sliver = 0, scans = 0, q = 6000;
-    mesher_walk_vs_scan(b, n, q, &in_sliver, &scans);
-    CHECK_MSG(in_sliver > q / 50, "focus sphere (%zu balls): %d answers in faces of slivers", n,
-              in_sliver);
-    CHECK_MSG(scans < q * 3 / 10, "focus sphere: %d of %d queries scanned", scans, q);
+    size_t n = focus_sphere(b, NULL);
+    int q = 6000;
+    walk_counts wc;
+    mesher_walk_vs_scan(b, n, q, &wc);
+    CHECK_MSG(wc.in_sliver > q / 50, "focus sphere (%zu balls): %d answers in faces of slivers",
+              n, wc.in_sliver);
+    CHECK_MSG(wc.scans < q * 3 / 10, "focus sphere: %d of %d queries scanned", wc.scans, q);
+    printf("focus sphere: %d of %d scanned, %d in dropped cells, %d in faces of slivers\n",
+           wc.scans, q, wc.in_dropped, wc.in_sliver);
+}
+
+/* B* of the geodesic sphere (eps 0.3, one round): the walk answers in the dropped cells of its
+ * non-positive balls (it scanned there until round 12), with the values of the full function
+ * there and the scan's wherever either is <= 0 (mesher_walk_vs_scan). */
+static void test_bstar_of_sphere_crosses_dropped_cells(void)
+{
+    static double b[4 * 400];
+    static geodesic geo;
+    focus_sphere(b, &geo);
+    fl_mesh m = {0};
+    m.vertex_count = 42;
+    m.triangle_count = 80;
+    m.xyz = geo.xyz;
+    m.tri = geo.tri;
+    fl_skin_approx_options o = {0};
+    o.max_rounds = 1;
+    o.grade = -1;
+    fl_skin_approx a;
+    fl_error err;
+    CHECK_STATUS(fl_skin_approx_build(&m, 0.3, &o, &a, &err), FL_OK, &err);
+    int q = 6000;
+    walk_counts wc;
+    mesher_walk_vs_scan(a.star.xyzw, a.star.count, q, &wc);
+    printf("sphere B* (%zu balls): %d of %d scanned, %d in dropped cells (%d equal to the full "
+           "function's walk), %d in faces of slivers\n", a.star.count, wc.scans, q, wc.in_dropped,
+           wc.dropped_checked, wc.in_sliver);
+    CHECK_MSG(wc.in_dropped > q / 50 && wc.dropped_checked > wc.in_dropped / 2,
+              "sphere B*: %d answers in dropped cells, %d checked against the full function",
+              wc.in_dropped, wc.dropped_checked);
+    CHECK_MSG(wc.scans < q / 10 && wc.missing <= q / 100,
+              "sphere B*: %d of %d queries scanned, %d stopped by a missing neighbour", wc.scans,
+              q, wc.missing);
+    fl_skin_approx_free(&a);
 }
 
 /* The exact link sign against the floating-point test where that is far from 0 (random
@@ -437,6 +544,7 @@ int main(void)
         FL_TEST_CASE(test_degenerate_sets_walk_equals_scan),
         FL_TEST_CASE(test_bstar_of_cube_walks_through_slivers),
         FL_TEST_CASE(test_focus_sphere_walks_through_slivers),
+        FL_TEST_CASE(test_bstar_of_sphere_crosses_dropped_cells),
         FL_TEST_CASE(test_link_sign_exact_matches),
     };
     return fl_test_run(cases, sizeof cases / sizeof cases[0]);

@@ -260,18 +260,26 @@ static void mesher_walk_vs_scan(const double *b, size_t n, int q_count, walk_cou
     fl_skin_function_free(full);
 }
 
-static void test_bstar_of_cube_walks_through_slivers(void)
+/* B* of the mesh m at eps (one round on the uniform grid) into *a, and the mesher's walk
+ * against the scan at q points near its positive balls into *wc. */
+static void bstar_walk_vs_scan(const fl_mesh *m, double eps, int q, fl_skin_approx *a,
+                               walk_counts *wc)
 {
-    fl_mesh m = skin_cube_mesh();
     fl_skin_approx_options o = {0};
     o.max_rounds = 1;
     o.grade = -1;
-    fl_skin_approx a;
     fl_error err;
-    CHECK_STATUS(fl_skin_approx_build(&m, 0.5, &o, &a, &err), FL_OK, &err);
+    CHECK_STATUS(fl_skin_approx_build(m, eps, &o, a, &err), FL_OK, &err);
+    mesher_walk_vs_scan(a->star.xyzw, a->star.count, q, wc);
+}
+
+static void test_bstar_of_cube_walks_through_slivers(void)
+{
+    fl_mesh m = skin_cube_mesh();
+    fl_skin_approx a;
     int q = 6000;
     walk_counts wc;
-    mesher_walk_vs_scan(a.star.xyzw, a.star.count, q, &wc);
+    bstar_walk_vs_scan(&m, 0.5, q, &a, &wc);
     CHECK_MSG(wc.in_sliver > q / 20, "cube B* (%zu balls): %d answers in faces of slivers",
               a.star.count, wc.in_sliver);
     CHECK_MSG(wc.scans < q / 20, "cube B*: %d of %d queries scanned", wc.scans, q);
@@ -441,15 +449,10 @@ static void test_bstar_of_sphere_crosses_dropped_cells(void)
     m.triangle_count = 80;
     m.xyz = geo.xyz;
     m.tri = geo.tri;
-    fl_skin_approx_options o = {0};
-    o.max_rounds = 1;
-    o.grade = -1;
     fl_skin_approx a;
-    fl_error err;
-    CHECK_STATUS(fl_skin_approx_build(&m, 0.3, &o, &a, &err), FL_OK, &err);
     int q = 6000;
     walk_counts wc;
-    mesher_walk_vs_scan(a.star.xyzw, a.star.count, q, &wc);
+    bstar_walk_vs_scan(&m, 0.3, q, &a, &wc);
     printf("sphere B* (%zu balls): %d of %d scanned, %d in dropped cells (%d equal to the full "
            "function's walk), %d in faces of slivers\n", a.star.count, wc.scans, q, wc.in_dropped,
            wc.dropped_checked, wc.in_sliver);

@@ -20,6 +20,8 @@
  * non-positive balls through light records (skin_light, frame recomputed on entry). */
 #include <math.h>
 #include <stdatomic.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <stdlib.h>
 
 #include "skin/skin_internal.h"
@@ -43,32 +45,35 @@ static int key_cmp(const uint32_t *a, const uint32_t *b)
     return 0;
 }
 
+/* The position of key in n records of size bytes, sorted by their ball[4] field at offset
+ * off (the stored skin_simplex and the dropped skin_light lists), or SIZE_MAX. */
+static size_t key_search(const void *base, size_t n, size_t size, size_t off,
+                         const uint32_t key[4])
+{
+    size_t lo = 0, hi = n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        int c = key_cmp((const uint32_t *)((const char *)base + mid * size + off), key);
+        if (c == 0) return mid;
+        if (c < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return SIZE_MAX;
+}
+
 /* The simplex with balls key (sorted, padded): its index among the stored simplices, or
  * simplex_count + its index among the dropped ones (the mesher's function), or UINT32_MAX when
  * it is in neither list. */
 static uint32_t find_simplex(const fl_skin_function *sk, const uint32_t key[4])
 {
-    size_t lo = 0, hi = sk->simplex_count;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        int c = key_cmp(sk->simplex[mid].ball, key);
-        if (c == 0) return (uint32_t)mid;
-        if (c < 0)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    lo = 0;
-    hi = sk->dropped_count;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        int c = key_cmp(sk->dropped[mid].ball, key);
-        if (c == 0) return (uint32_t)(sk->simplex_count + mid);
-        if (c < 0)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
+    size_t i = key_search(sk->simplex, sk->simplex_count, sizeof *sk->simplex,
+                          offsetof(skin_simplex, ball), key);
+    if (i != SIZE_MAX) return (uint32_t)i;
+    i = key_search(sk->dropped, sk->dropped_count, sizeof *sk->dropped,
+                   offsetof(skin_light, ball), key);
+    if (i != SIZE_MAX) return (uint32_t)(sk->simplex_count + i);
 #ifdef FL_SKIN_WALK_STATS
     { /* the missing simplices by dimension and sign: positive ball or not */
         extern _Atomic size_t skin_stat_missing[2][4];

@@ -81,12 +81,14 @@ static void test_union_euler_matches_alpha_oracle_on_random_sets(void)
  *   w = 3   the centre has power exactly 0: only that point is missed, still chi 2
  *   w = 3.5 solid: chi 1
  * Every 4 or 5 corner balls are cospherical (co-orthogonal), the most degenerate regular
- * triangulation, and w = 1, 2, 3 put the decisive powers exactly at 0. */
+ * triangulation, and w = 1, 2, 3 put the decisive powers exactly at 0; w = 2 +- 2^-40 and
+ * 3 +- 2^-40 put them 2^-40 from 0, on the side that the values above w say. */
 static void test_cospherical_cube_corners_have_the_elementary_euler(void)
 {
-    static const double w[] = {1, 1.5, 2, 2.5, 3, 3.5};
-    static const long long chi[] = {8, -4, -4, 2, 2, 1};
-    for (int k = 0; k < 6; k++) {
+    const double d = ldexp(1, -40); /* decided by the exact stage: the filter cannot */
+    const double w[] = {1, 1.5, 2, 2.5, 3, 3.5, 2 - d, 2 + d, 3 - d, 3 + d};
+    static const long long chi[] = {8, -4, -4, 2, 2, 1, -4, 2, 2, 1};
+    for (int k = 0; k < 10; k++) {
         double b[32];
         for (int i = 0; i < 8; i++) {
             b[4 * i + 0] = i & 1 ? 1 : -1;

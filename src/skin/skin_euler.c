@@ -91,6 +91,12 @@ static int perm_fixes_tail(int q, int m)
 
 /* ---- the bordered determinant in floating point, certified or not ---- */
 
+static int in_filter_range(double v)
+{
+    double a = fabs(v);
+    return a == 0 || (a >= 1e-30 && a <= 1e30);
+}
+
 /* Sign of the bordered determinant of simplex x[0..k] (mode LINK_TEST with ball b, or
  * POWER_TEST) when floating point certifies it, else 2. Error bound: every entry is a sum of at
  * most 5 products or differences of input values, computed with relative error <= 8u of the sum
@@ -98,8 +104,10 @@ static int perm_fixes_tail(int q, int m)
  * Leibniz term of m <= 4 entries then errs by <= ((1 + 8u)^4 (1 + u)^3 - 1) prod A <= 36u
  * prod A, and the sum of at most 24 terms adds <= 24u (1 + 36u) sum prod A. So
  * |D_float - D| <= 61u P with P = sum over permutations of prod A; the filter asks for
- * |D_float| > 1e-13 P (about 15 times that bound, which also covers the rounding of P). Below
- * 1e-280 (underflow of products) or non-finite values go to the exact stage. */
+ * |D_float| > 1e-13 P (about 15 times that bound, which also covers the rounding of P). The
+ * bound assumes no underflow or overflow: every nonzero |e_ic| and sqrt|w| must lie in
+ * [1e-30, 1e30], so every product of up to 8 of them stays within [1e-240, 1e240]; other
+ * inputs go to the exact stage. */
 static int bordered_filter(const double *balls, const uint32_t *x, int k, int mode, uint32_t b)
 {
     const double *z0 = balls + 4 * (size_t)x[0];
@@ -107,9 +115,13 @@ static int bordered_filter(const double *balls, const uint32_t *x, int k, int mo
     int rows = k + (mode == LINK_TEST);
     for (int i = 0; i < rows; i++) {
         const double *zi = balls + 4 * (size_t)(i < k ? x[i + 1] : b);
-        for (int c = 0; c < 3; c++)
+        for (int c = 0; c < 3; c++) {
             e[i][c] = zi[c] - z0[c];
+            if (!in_filter_range(e[i][c])) return 2;
+        }
+        if (!in_filter_range(sqrt(fabs(zi[3])))) return 2;
     }
+    if (!in_filter_range(sqrt(fabs(z0[3])))) return 2;
     /* s_i and its magnitude, for the k edges and (LINK_TEST) the ball b in row k */
     double s[4], sa[4];
     for (int i = 0; i < rows; i++) {
@@ -151,7 +163,7 @@ static int bordered_filter(const double *balls, const uint32_t *x, int k, int mo
         d += prod;
         p += mag;
     }
-    if (!isfinite(d) || !isfinite(p) || p < 1e-280) return 2;
+    if (!isfinite(d) || !isfinite(p)) return 2;
     if (fabs(d) > 1e-13 * p) return d > 0 ? 1 : -1;
     if (p == 0) return 0; /* every entry and term is exactly zero */
     return 2;

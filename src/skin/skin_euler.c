@@ -47,17 +47,15 @@
 
 enum { LINK_TEST = 0, POWER_TEST = 1 };
 
-typedef struct euler_simplex {
-    uint32_t v[4]; /* sorted ball indices, UINT32_MAX padded */
-    int in;        /* 1 when in the dual complex K */
-} euler_simplex;
-
-/* A k-simplex X and one of its cofaces Y = X + opp (in K or not). */
-typedef struct coface_entry {
-    uint32_t x[4];
+/* One record type for both roles, so a level's entries can be compacted in place into the next
+ * level: as an entry, v = a k-simplex X (sorted ball indices, UINT32_MAX padded), opp the ball
+ * of one of its cofaces Y = X + opp and in = 1 when Y is in K; as a simplex of a level, v and
+ * in = 1 when it is in the dual complex K (opp unused). */
+typedef struct simplex_rec {
+    uint32_t v[4];
     uint32_t opp;
-    int coface_in;
-} coface_entry;
+    int in;
+} simplex_rec;
 
 static int cmp_key(const uint32_t *a, const uint32_t *b)
 {
@@ -66,9 +64,9 @@ static int cmp_key(const uint32_t *a, const uint32_t *b)
     return 0;
 }
 
-static int cmp_entry(const void *pa, const void *pb)
+static int cmp_rec(const void *pa, const void *pb)
 {
-    return cmp_key(((const coface_entry *)pa)->x, ((const coface_entry *)pb)->x);
+    return cmp_key(((const simplex_rec *)pa)->v, ((const simplex_rec *)pb)->v);
 }
 
 /* The 24 permutations of 0..3 and their signs (Leibniz expansion of a determinant). A
@@ -303,18 +301,18 @@ static int bordered_sign(const double *balls, const uint32_t *x, int k, int mode
 
 /* ---- the dual complex, from tetrahedra down to vertices ---- */
 
-/* X = group[0].x with its cofaces group[0..count-1]: 1 when X is in K, 0 when not, -1 when
+/* X = group[0].v with its cofaces group[0..count-1]: 1 when X is in K, 0 when not, -1 when
  * out of memory. */
-static int decide(const double *balls, const coface_entry *group, size_t count, int k)
+static int decide(const double *balls, const simplex_rec *group, size_t count, int k)
 {
     for (size_t i = 0; i < count; i++)
-        if (group[i].coface_in) return 1; /* nu_Y lies in nu_X, where pi_X = pi_Y < 0 */
+        if (group[i].in) return 1; /* nu_Y lies in nu_X, where pi_X = pi_Y < 0 */
     for (size_t i = 0; i < count; i++) {
-        int s = bordered_sign(balls, group[0].x, k, LINK_TEST, group[i].opp);
+        int s = bordered_sign(balls, group[0].v, k, LINK_TEST, group[i].opp);
         if (s == 2) return -1;
         if (s < 0) return 0; /* f beyond the facet of the coface: the minimum is on the boundary */
     }
-    int s = bordered_sign(balls, group[0].x, k, POWER_TEST, 0);
+    int s = bordered_sign(balls, group[0].v, k, POWER_TEST, 0);
     if (s == 2) return -1;
     return s > 0; /* det sign is the opposite of pi_X(f)'s: X in K iff pi_X(f) < 0 */
 }
@@ -334,8 +332,7 @@ static void sort4(uint32_t *v)
 static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *chi, fl_error *err)
 {
     size_t count = rt->tet_count;
-    euler_simplex *level = fl_alloc_array(count ? count : 1, sizeof *level);
-    coface_entry *entries = NULL;
+    simplex_rec *level = fl_alloc_array(count ? count : 1, sizeof *level);
     if (!level) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "balls union euler: out of memory");
     long long sum = 0;
     /* tetrahedra: nu_X is the point f itself */
@@ -350,45 +347,41 @@ static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *ch
     for (int k = 2; k >= 0; k--) {
         /* every (k+1)-simplex Y gives each of its k + 2 facets X the entry (X, Y \ X, Y in K) */
         size_t m = count * (size_t)(k + 2), u = 0;
-        coface_entry *e = fl_alloc_array(m ? m : 1, sizeof *e);
+        simplex_rec *e = fl_alloc_array(m ? m : 1, sizeof *e);
         if (!e) goto nomem;
-        entries = e;
         for (size_t y = 0; y < count; y++)
             for (int drop = 0; drop <= k + 1; drop++) {
-                coface_entry *c = &e[u++];
+                simplex_rec *c = &e[u++];
                 int j = 0;
                 for (int i = 0; i <= k + 1; i++)
-                    if (i != drop) c->x[j++] = level[y].v[i];
+                    if (i != drop) c->v[j++] = level[y].v[i];
                 for (; j < 4; j++)
-                    c->x[j] = UINT32_MAX;
+                    c->v[j] = UINT32_MAX;
                 c->opp = level[y].v[drop];
-                c->coface_in = level[y].in;
+                c->in = level[y].in;
             }
-        qsort(e, m, sizeof *e, cmp_entry);
-        euler_simplex *below = fl_alloc_array(m ? m : 1, sizeof *below); /* >= distinct X */
-        if (!below) goto nomem;
         free(level);
-        level = below;
+        level = e;
+        qsort(e, m, sizeof *e, cmp_rec);
+        /* decide each group of equal X and compact the k-simplices into the front of e (record
+         * `count` <= the group's first index, already read) */
         count = 0;
         for (size_t i = 0; i < m;) {
             size_t j = i + 1;
-            while (j < m && !cmp_key(e[j].x, e[i].x))
+            while (j < m && !cmp_key(e[j].v, e[i].v))
                 j++;
             int in = decide(balls, e + i, j - i, k);
             if (in < 0) goto nomem;
-            memcpy(level[count].v, e[i].x, sizeof level[count].v);
-            level[count++].in = in;
+            memmove(e[count].v, e[i].v, sizeof e[count].v);
+            e[count++].in = in;
             if (in) sum += k % 2 ? -1 : 1;
             i = j;
         }
-        free(entries);
-        entries = NULL;
     }
     free(level);
     *chi = sum;
     return FL_OK;
 nomem:
-    free(entries);
     free(level);
     return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "balls union euler: out of memory");
 }

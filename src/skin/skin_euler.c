@@ -387,7 +387,8 @@ nomem:
 }
 
 /* The balls plus four auxiliary ones at the corners of a regular tetrahedron of half-size L
- * around the centres' box, L a power of two at least 4 (box diagonal + largest radius + 1),
+ * around the centres' box, L a power of two at least 4 (box diagonal + largest radius + 1 +
+ * largest coordinate of the box centre),
  * weight -16 L^2: their power |x - c|^2 + 16 L^2 is positive everywhere, and their centres lie
  * outside the hull of the others, so they are vertices and the triangulation is 3D. NULL when
  * out of memory or when L overflows (*too_big set). */
@@ -402,14 +403,17 @@ static double *with_auxiliary(const double *xyzw, size_t n, int *too_big)
         }
         wmax = fmax(wmax, xyzw[4 * i + 3]);
     }
-    double mid[3], diag = 0;
+    double mid[3], diag = 0, far = 0;
     for (int c = 0; c < 3; c++) {
         mid[c] = n ? 0.5 * lo[c] + 0.5 * hi[c] : 0;
         diag += n ? (hi[c] - lo[c]) * (hi[c] - lo[c]) : 0;
+        far = fmax(far, fabs(mid[c]));
     }
-    double size = 4 * (sqrt(diag) + sqrt(wmax) + 1);
+    /* L also exceeds the coordinates themselves, so mid +- L does not round back onto mid (a
+     * small set far from the origin would get a flat or repeated auxiliary tetrahedron) */
+    double size = 4 * (sqrt(diag) + sqrt(wmax) + 1 + far);
     double L = isfinite(size) ? exp2(ceil(log2(size))) : HUGE_VAL;
-    *too_big = !(L < 1e100);
+    *too_big = !(L < 1e120); /* inputs are <= 1e100, so this holds; 16 L^2 stays finite */
     if (*too_big) return NULL;
     double *all = fl_alloc_array(n + 4, 4 * sizeof(double));
     if (!all) return NULL;

@@ -225,6 +225,13 @@ static void test_few_coplanar_collinear_and_duplicate_balls(void)
     for (int i = 0; i < 48; i++)
         ring[48 + i] = ring[i];
     CHECK_EQ_INT(union_euler(ring, 24), 0);
+    /* a collinear chain far from the origin: x = 1e20 for all (ulp 16384), y = 0, 1, 2, radius
+     * 0.6: one component; the auxiliary balls must not round onto the plane x = 1e20 (found by
+     * fuzz_skin: an auxiliary tetrahedron sized by the extent alone was flat there) */
+    double far[12] = {1e20, 0, 0, 0.36, 1e20, 1, 0, 0.36, 1e20, 2, 0, 0.36};
+    CHECK_EQ_INT(union_euler(far, 3), 1);
+    far[3] = far[7] = far[11] = 0.2; /* radius 0.447 < 0.5: three separate balls */
+    CHECK_EQ_INT(union_euler(far, 3), 3);
     /* duplicate centres with other weights on a 3D set */
     double dup[4 * 6] = {0, 0, 0, 1, 3, 0, 0, 1,   0, 3, 0, 1,
                          0, 0, 3, 1, 0, 0, 0, 0.5, 3, 0, 0, 4.41};

@@ -1,6 +1,7 @@
 /* Fuzzes the skin surface module on up to 6 decoded balls (grid centres, weights mostly small
  * positive, sometimes zero, negative, NaN or huge) and a shrink factor t: fl_skin_function_new +
- * fl_skin_function_value, then fl_skin_mesh with a small cube budget. Invariants: NaN/Inf, a
+ * fl_skin_function_value, fl_balls_union_euler (chi of the union in [0, positive balls], their
+ * count when no two meet), then fl_skin_mesh with a small cube budget. Invariants: NaN/Inf, a
  * value beyond 1e100 or no positive weight gives FL_ERR_INPUT, t outside (0, 1) FL_ERR_USAGE;
  * G < 0 at the centre of every ball of positive weight (the centre is inside b^t, so inside the
  * body), G > 0 far outside every ball; on success the mesh is closed, manifold and oriented (fl_mesh_check), outward (positive
@@ -37,6 +38,32 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int usage = !(t > 0 && t < 1);
     fl_error err;
     memset(&err, 0, sizeof err);
+    /* fl_balls_union_euler (any t; <= 3 balls always take its auxiliary-ball path): bad values
+     * are FL_ERR_INPUT; else chi(union) = components - loops lies in [0, positive balls] (3
+     * balls enclose no void), and equals that count when no two positive balls meet. */
+    long long chi = -1;
+    fl_status est = fl_balls_union_euler(xyzw, n, &chi, &err);
+    fz_check_status(est, &err, "fl_balls_union_euler");
+    if (bad) {
+        FZ_ASSERT(est == FL_ERR_INPUT, "bad balls gave %d for the union's Euler", (int)est);
+    } else {
+        FZ_ASSERT(est == FL_OK, "union Euler failed (%d): %s", (int)est, err.message);
+        long long count = 0;
+        int apart = 1;
+        for (size_t i = 0; i < n; i++) {
+            if (!(xyzw[4 * i + 3] > 0)) continue;
+            count++;
+            for (size_t j = 0; j < i; j++) {
+                if (!(xyzw[4 * j + 3] > 0)) continue;
+                double d2 = 0, rr = sqrt(xyzw[4 * i + 3]) + sqrt(xyzw[4 * j + 3]);
+                for (int k = 0; k < 3; k++)
+                    d2 += (xyzw[4 * i + k] - xyzw[4 * j + k]) * (xyzw[4 * i + k] - xyzw[4 * j + k]);
+                if (!(d2 > rr * rr * (1 + 1e-9))) apart = 0;
+            }
+        }
+        FZ_ASSERT(chi >= 0 && chi <= count, "union Euler %lld of %lld balls", chi, count);
+        FZ_ASSERT(!apart || chi == count, "union Euler %lld of %lld separate balls", chi, count);
+    }
     fl_skin_function *g = NULL;
     fl_status st = fl_skin_function_new(xyzw, n, t, &g, &err);
     fz_check_status(st, &err, "fl_skin_function_new");

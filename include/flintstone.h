@@ -1805,6 +1805,39 @@ typedef struct fl_skin_stats {
 fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
                        fl_skin_stats *stats, fl_error *err);
 
+/* The Euler characteristic of the union of the open balls xyzw[4n] (x, y, z, w; w the squared
+ * radius, balls of weight <= 0 are empty) into *chi. The skin body is homotopy equivalent to
+ * the union, so a mesh of skin^t(B) has the skin's topology only if its Euler characteristic
+ * is 2 * *chi. Computed exactly from the dual (alpha) complex of the balls at alpha = 0: the
+ * regular triangulation (fl_rt3_build) and, per simplex, exact tests of its focus against its
+ * cofaces (docs/skin.md, "The topology check"). Any number of balls (0 gives 0), duplicates,
+ * hidden balls, and centres fewer than 4 or in a plane or on a line are handled.
+ * FL_ERR_USAGE for NULL pointers, FL_ERR_INPUT for NaN/Inf or a value beyond 1e100,
+ * FL_ERR_NOMEM. */
+fl_status fl_balls_union_euler(const double *xyzw, size_t n, long long *chi, fl_error *err);
+
+/* What fl_skin_mesh_checked decided. */
+typedef struct fl_skin_check {
+    long long euler;          /* Euler characteristic of the mesh returned (V - F/2: the mesh
+                                 is a closed 2-manifold) */
+    long long euler_expected; /* 2 chi(union of the balls), fl_balls_union_euler */
+    int topology_ok;          /* 1 when euler == euler_expected */
+    int attempts;             /* meshes built, 1 to 3 */
+    double grade;             /* grade of the grid of the mesh returned; 0 the uniform grid */
+} fl_skin_check;
+
+/* fl_skin_mesh with a topology check. With opt NULL or opt->cell and opt->grade both 0 (the
+ * default), meshes on the graded grid of grade 1.5, and when the mesh's Euler characteristic
+ * is not 2 chi(union of the balls) retries at grade 0.75, then on the uniform grid of the
+ * default cell, keeping the first mesh that matches, else the last (finest) one with
+ * check->topology_ok = 0. A graded attempt refused for its size (FL_ERR_INPUT) moves on to the
+ * next. With cell or grade given, meshes once as asked and reports the check. check may be
+ * NULL; stats are those of the mesh returned. Errors as fl_skin_mesh and
+ * fl_balls_union_euler. On failure *out is zeroed. Free with fl_mesh_free. */
+fl_status fl_skin_mesh_checked(const double *xyzw, size_t n, const fl_skin_options *opt,
+                               fl_mesh *out, fl_skin_stats *stats, fl_skin_check *check,
+                               fl_error *err);
+
 /* ---- ε-approximation of a polyhedron by balls (Cheng & Tan §5, §6.2; docs/skin.md) ----
  * B: protecting balls centred on the mesh, each of radius min(0.45 lgs(centre), rho) with lgs
  * the local gap size (§4) and rho = 0.8 epsilon, covering every vertex, edge and triangle, so

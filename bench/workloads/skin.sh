@@ -63,11 +63,13 @@ run_case() { # NAME BALLS CELL (0: the default cell) [GRADE (the graded grid)]
     sed -n 's/.*"hausdorff":\[\([^]]*\)\].*/\1/p')
   o_cpu=$(median <<<"${o_cpus%$'\n'}")
   p_cpu=$(median <<<"${p_cpus%$'\n'}")
-  printf 'ROW|skin %s|%s|CGAL make_skin_surface_mesh_3|%s|%s|CPU s ours %s, CGAL %s (load %s); ours V=%s F=%s Euler %s cell %s, CGAL V=%s F=%s; max vertex-to-other-mesh distance ours->CGAL %.3g, CGAL->ours %.3g; Hausdorff [%s]\n' \
+  printf 'ROW|skin %s|%s|CGAL make_skin_surface_mesh_3|%s|%s|CPU s ours %s, CGAL %s (load %s); ours V=%s F=%s Euler %s (expected %s, %s mesh(es), grade %s, union Euler check %s s CPU) cell %s, CGAL V=%s F=%s; max vertex-to-other-mesh distance ours->CGAL %.3g, CGAL->ours %.3g; Hausdorff [%s]\n' \
     "$name" "$(median <<<"${o_times%$'\n'}")" "$(median <<<"${p_times%$'\n'}")" \
     "$(awk -v o="$o_cpu" -v p="$p_cpu" 'BEGIN { printf "%.2f", o / p }')" "$o_cpu" "$p_cpu" \
     "$(cut -d' ' -f1 /proc/loadavg)" "$(field vertices "$o_line")" "$(field faces "$o_line")" \
-    "$(field euler "$o_line")" "$(field cell "$o_line")" "$(field vertices "$p_line")" \
+    "$(field euler "$o_line")" "$(field expected "$o_line")" "$(field attempts "$o_line")" \
+    "$(field grade "$o_line")" "$(field check_cpu "$o_line")" "$(field cell "$o_line")" \
+    "$(field vertices "$p_line")" \
     "$(field faces "$p_line")" "$d1" "$d2" "$hd"
 }
 
@@ -78,7 +80,11 @@ for spec in "${cases[@]}"; do
   set -- $spec
   balls=$out/$1_$2.xyzw
   if [ "$1" = random ]; then gen_random "$2" "$3" >"$balls"; else gen_helix "$2" >"$balls"; fi
-  run_case "$1 $2 (default cell)" "$balls" 0
+  # the default of `skin --balls` (fl_skin_mesh_checked: graded 1.5, 0.75, then the uniform
+  # default cell, until the Euler characteristic is twice the union's)
+  run_case "$1 $2 (default: checked)" "$balls" 0
+  # SKIN_UNIFORM=1: also the uniform grid's default cell alone (the default until round 13)
+  if [ "${SKIN_UNIFORM:-0}" = 1 ]; then run_case "$1 $2 (uniform default cell)" "$balls" -1; fi
   # sqrt(t) r_min / 4 (the default cell before the neck rule); the coarse one is factor times it
   rmin=$(awk 'NR == 1 || $4 < m { m = $4 } END { printf "%.9g", sqrt(m) }' "$balls")
   run_case "$1 $2 (cell x$factor)" "$balls" "$(awk -v r="$rmin" -v f="$factor" \

@@ -20,7 +20,12 @@ static const char *usage_text =
     "Triangulates the skin surface skin^t(B) of a ball set: the boundary of the union of the\n"
     "convex combinations of the balls, each shrunk to sqrt(t) times its radius. BALLS holds one\n"
     "ball a line, \"x y z w\" with w the squared radius (.xyzw .txt .csv). The mesh is closed,\n"
-    "oriented and 2-manifold; its vertices lie on the skin to rounding.\n"
+    "oriented and 2-manifold; its vertices lie on the skin to rounding. Its topology is\n"
+    "checked: the skin's Euler characteristic is exactly twice the union of balls' (computed\n"
+    "exactly). By default the mesh is made on the graded grid of grade 1.5; when its Euler\n"
+    "characteristic is wrong it is made again at grade 0.75, then on the uniform grid of the\n"
+    "default cell; the first mesh that passes is kept. If none passes (or --cell / --grade\n"
+    "was given and the check fails) the mesh is written with a warning on stderr.\n"
     "\n"
     "With MESH (a closed, oriented, 2-manifold triangle mesh without self-intersections) and\n"
     "--epsilon, the balls are B* of Cheng & Tan's approximation of the object within E (see\n"
@@ -33,14 +38,18 @@ static const char *usage_text =
     "  --placement P  with MESH: alg1 (default, §4.2 Algorithm 1) or subdivision (see balls)\n"
     "  --star B     with MESH: also write B* (\"x y z w\" lines, w the weight, negative for\n"
     "               the orthogonal balls of alpha simplices), readable by --balls\n"
-    "  --cell H     grid spacing (default: sqrt(t) times the smallest radius / 4, smaller for\n"
-    "               thin necks; with MESH: 0.4 E); features thinner than H can be missed\n"
+    "  --cell H     uniform grid of spacing H, one mesh (--balls default: the checked grids\n"
+    "               above, whose uniform cell is sqrt(t) times the smallest radius / 4,\n"
+    "               smaller for thin necks; with MESH: 0.4 E); features thinner than H can be\n"
+    "               missed\n"
     "  --grade G    graded grid: octree cells of G times the local feature size of the skin\n"
-    "               (shrunk radius, neck waist), at most H; exactly triangulated, crack-free.\n"
-    "               With MESH: default uniform, then graded 2.2 when the topology is wrong\n"
+    "               (shrunk radius, neck waist), at most H; exactly triangulated, crack-free;\n"
+    "               one mesh. With MESH: default uniform, then graded 2.2 when the topology\n"
+    "               is wrong\n"
     "  -o FILE      the mesh (.off .obj .ply .stl)\n"
     "  --json       --balls: balls, vertices, faces, euler, genus, closed, manifold, cell,\n"
-    "               max_vertex_offset, seconds; MESH: balls (|B*|), faces, euler,\n"
+    "               max_vertex_offset, euler_expected, topology_ok, grade (0: uniform),\n"
+    "               attempts, seconds; MESH: balls (|B*|), faces, euler,\n"
     "               euler_input, epsilon, hausdorff_upper, rounds, cell, grade, seconds\n"
     "\n"
     "example: flintstone skin --balls balls.xyzw --t 0.5 -o skin.off --json\n"
@@ -98,7 +107,8 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
 }
 
 static void print_summary(const cli_common *c, const fl_balls *b, const fl_mesh *m,
-                          const fl_mesh_report *rep, const fl_skin_stats *st, double seconds)
+                          const fl_mesh_report *rep, const fl_skin_stats *st,
+                          const fl_skin_check *chk, double seconds)
 {
     if (c->json) {
         cli_json j;
@@ -112,14 +122,30 @@ static void print_summary(const cli_common *c, const fl_balls *b, const fl_mesh 
         cli_json_bool(&j, "manifold", rep->manifold);
         cli_json_double(&j, "cell", st->cell);
         cli_json_double(&j, "max_vertex_offset", st->max_vertex_offset);
+        cli_json_int(&j, "euler_expected", chk->euler_expected);
+        cli_json_bool(&j, "topology_ok", chk->topology_ok);
+        cli_json_double(&j, "grade", chk->grade);
+        cli_json_int(&j, "attempts", chk->attempts);
         cli_json_double(&j, "seconds", seconds);
         cli_json_end(&j);
     } else if (!c->quiet) {
+        char grid[64];
+        if (chk->grade > 0)
+            snprintf(grid, sizeof grid, "grade %g, smallest cell %g", chk->grade, st->cell);
+        else
+            snprintf(grid, sizeof grid, "cell %g", st->cell);
         printf("skin of %zu balls: %zu vertices, %zu faces, Euler characteristic %lld%s "
-               "(cell %g, %.3f s)\n",
+               "(expected %lld; %s, %d mesh%s, %.3f s)\n",
                b->count, m->vertex_count, m->triangle_count, rep->euler,
-               rep->closed && rep->manifold ? ", closed 2-manifold" : "", st->cell, seconds);
+               rep->closed && rep->manifold ? ", closed 2-manifold" : "", chk->euler_expected, grid,
+               chk->attempts, chk->attempts == 1 ? "" : "es", seconds);
     }
+    if (!chk->topology_ok)
+        fprintf(stderr,
+                "flintstone skin: warning: the mesh's Euler characteristic %lld is not %lld, "
+                "twice the union of balls'; the grid does not resolve the skin's topology (%s); "
+                "try a smaller --cell or --grade\n",
+                rep->euler, chk->euler_expected, chk->grade > 0 ? "graded grid" : "uniform grid");
 }
 
 /* B* as "x y z w" lines (the --balls format), written atomically. */
@@ -212,6 +238,7 @@ int cmd_skin(int argc, char **argv)
     fl_mesh mesh = {0};
     fl_mesh_report rep = {0};
     fl_skin_stats stats;
+    fl_skin_check check = {0};
     cli_progress prog;
     cli_progress_init(&prog, &c);
     double t0 = cli_now();
@@ -223,7 +250,7 @@ int cmd_skin(int argc, char **argv)
         opt.grade = a.grade;
         opt.progress = cli_progress_fn;
         opt.progress_user = &prog;
-        st = fl_skin_mesh(balls.xyzw, balls.count, &opt, &mesh, &stats, &err);
+        st = fl_skin_mesh_checked(balls.xyzw, balls.count, &opt, &mesh, &stats, &check, &err);
         cli_progress_done(&prog);
     }
     double seconds = cli_now() - t0;
@@ -231,7 +258,7 @@ int cmd_skin(int argc, char **argv)
     copt.skip_self_intersections = 1;
     if (st == FL_OK) st = fl_mesh_check(&mesh, &copt, &rep, &err);
     if (st == FL_OK && c.output) st = fl_write_mesh(c.output, &mesh, &err);
-    if (st == FL_OK) print_summary(&c, &balls, &mesh, &rep, &stats, seconds);
+    if (st == FL_OK) print_summary(&c, &balls, &mesh, &rep, &stats, &check, seconds);
     fl_mesh_report_free(&rep);
     fl_mesh_free(&mesh);
     fl_balls_free(&balls);

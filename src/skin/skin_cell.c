@@ -114,6 +114,7 @@ static _Atomic size_t stat_eval, stat_walk, stat_dropped, stat_why[16];
  * (index list lengths) */
 static _Atomic size_t stat_search[2], stat_search_cells, stat_scan_items;
 _Atomic size_t skin_stat_missing[2][4];
+_Atomic size_t skin_stat_scan_evaluated; /* candidates inside their box (skin_value_scan) */
 /* capped walks probed on (FL_SKIN_CAP_PROBE): not ended, found the cell, gave up, cycled */
 static _Atomic size_t stat_probe[4], stat_probe_steps[4];
 static void stats_print(void)
@@ -133,9 +134,9 @@ static void stats_print(void)
             fprintf(stderr, " %zu", (size_t)skin_stat_missing[p][k]);
     size_t sr = stat_search[0] + stat_search[1], sc = e - w;
     fprintf(stderr, "; give-up searches: %zu (%zu found the cell; %.1f cells tested each); "
-            "%.0f candidates per scan", sr, (size_t)stat_search[1],
+            "%.0f candidates per scan (all scans: %zu evaluated in their box)", sr, (size_t)stat_search[1],
             sr ? (double)stat_search_cells / (double)sr : 0.0,
-            sc ? (double)stat_scan_items / (double)sc : 0.0);
+            sc ? (double)stat_scan_items / (double)sc : 0.0, (size_t)skin_stat_scan_evaluated);
     if (stat_probe[0] + stat_probe[1] + stat_probe[2] + stat_probe[3])
         fprintf(stderr, "; capped walks probed on: %zu unended, %zu ended in a cell (%zu more "
                 "steps), %zu gave up, %zu cycled (%zu steps)", (size_t)stat_probe[0],

@@ -132,6 +132,10 @@ struct fl_skin_function {
     size_t dims[3];
     size_t *cell_start;
     uint32_t *cell_item;
+    /* The registration box of each simplex in float (lo xyz, hi xyz, rounded outwards; empty
+     * for simplices in no list): the scan skips the candidates whose box does not hold x
+     * (skin_value_scan; round 13). */
+    float *scan_box;
     /* The mixed complex for point location (skin_cell.c), only for the regular-triangulation
      * path (walkable = 1; the few-ball subset path scans): the simplices are sorted by ball[],
      * link_start/link list the link of each simplex (the balls b with X + b a simplex), balls

@@ -1773,7 +1773,9 @@ typedef struct fl_skin_options {
     double cell;       /* grid spacing; 0 means sqrt(t) * (smallest positive radius) / 4,
                         * smaller (down to 1/4 of that) to straddle thin necks (docs/skin.md) */
     size_t max_cubes;  /* refuse grids with more candidate cubes than this; 0 means 5e7 (about 16 bytes a cube);
-                        * graded: more octree leaves than this, 0 means 3e6 */
+                        * graded: more octree leaves than this, 0 means the address-space
+                        * limit (RLIMIT_AS, the CLI's --max-memory) / 512 bytes a leaf, at
+                        * least 3e6; 3e6 without a limit */
     fl_progress_fn progress; /* may be NULL; stage "skin" */
     void *progress_user;
     double grade;      /* 0: the uniform grid above. > 0: a graded grid (octree corners,

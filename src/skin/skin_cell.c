@@ -14,8 +14,9 @@
  * link ball b whose test fails. The mesher evaluates neighbouring points, so starting from the
  * previous point's cell the walk ends after 0-2 steps. A walk that does not end within its step
  * cap (degenerate power faces, rounding near a shared boundary), comes back to a cell it left,
- * or cannot go round a simplex that was dropped as affinely dependent falls back to the
- * candidate scan, which is correct on its own; so the walk only changes the speed, never the
+ * or cannot go round a simplex that was dropped as affinely dependent first tries the cells
+ * round the one it stopped in (give_up_search), then falls back to the candidate scan, which
+ * is correct on its own; so the walk only changes the speed, never the
  * value beyond rounding. The mesher's function crosses the cells of its simplices of
  * non-positive balls through light records (skin_light, frame recomputed on entry). */
 #include <math.h>
@@ -110,7 +111,11 @@ enum { WHY_MISSING = SKIN_WHY_MISSING, WHY_BOX = SKIN_WHY_BOX, WHY_CAP = SKIN_WH
 #include <stdio.h>
 #include <stdlib.h>
 static _Atomic size_t stat_eval, stat_walk, stat_dropped, stat_why[16];
+/* give-up searches (give_up_search): none found / found; cells tested; the scans' candidates
+ * (index list lengths) */
+static _Atomic size_t stat_search[2], stat_search_cells, stat_scan_items;
 _Atomic size_t skin_stat_missing[2][4];
+_Atomic size_t skin_stat_scan_evaluated; /* candidates inside their box (skin_value_scan) */
 /* capped walks probed on (FL_SKIN_CAP_PROBE): not ended, found the cell, gave up, cycled */
 static _Atomic size_t stat_probe[4], stat_probe_steps[4];
 static void stats_print(void)
@@ -128,6 +133,11 @@ static void stats_print(void)
     for (int p = 0; p < 2; p++)
         for (int k = 0; k < 4; k++)
             fprintf(stderr, " %zu", (size_t)skin_stat_missing[p][k]);
+    size_t sr = stat_search[0] + stat_search[1], sc = e - w;
+    fprintf(stderr, "; give-up searches: %zu (%zu found the cell; %.1f cells tested each); "
+            "%.0f candidates per scan (all scans: %zu evaluated in their box)", sr, (size_t)stat_search[1],
+            sr ? (double)stat_search_cells / (double)sr : 0.0,
+            sc ? (double)stat_scan_items / (double)sc : 0.0, (size_t)skin_stat_scan_evaluated);
     if (stat_probe[0] + stat_probe[1] + stat_probe[2] + stat_probe[3])
         fprintf(stderr, "; capped walks probed on: %zu unended, %zu ended in a cell (%zu more "
                 "steps), %zu gave up, %zu cycled (%zu steps)", (size_t)stat_probe[0],
@@ -290,7 +300,11 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
 
 /* Walks from *cur for at most steps cells; 1 with *val when the cell of x was found. A walk
  * that comes back to one of the last SKIN_WALK_SEEN cells it left is going round in circles
- * (the tests of neighbouring cells contradict each other by rounding): it gives up at once. */
+ * (the tests of neighbouring cells contradict each other by rounding): it gives up at once.
+ * Not a matter of the walk's order: on cube.off's B* (eps 0.5) its cycles run through 3-8
+ * vertices, edges and triangles of slivers, and a stochastic walk continued from them (a
+ * random violated test each step) ended in a cell in 29 of 2040 cases within 128 steps
+ * (round 13, docs/skin.md), so no accepting cell lies along those paths. */
 #define SKIN_WALK_SEEN 8
 static int walk(const fl_skin_function *sk, const double *x, uint32_t *cur, int steps,
                 double *val, int *why)
@@ -344,6 +358,77 @@ static int walk(const fl_skin_function *sk, const double *x, uint32_t *cur, int 
     return 0;
 }
 
+/* Where the walk gave up (a cycle, the step cap, a neighbour not listed) x often lies in a cell next to the one it stopped in, which its most-violated
+ * choice did not lead to. A breadth-first search over the facets and cofaces of that cell
+ * collects at most SKIN_SEARCH_CELLS cells and tests each with the walk's own test (cell_test:
+ * the same slack, exact sliver tests, shaky cells never accepted), so a cell it accepts is one
+ * the walk would have answered in, with the same value. 1 with *cur the cell and *val its
+ * value, 0 when none accepts (the caller scans). Cube.off's B* (eps 0.5): 320 of 712 give-ups
+ * answered, scans 7.1 % -> 2.4 % of the evaluations; sphere.off's (eps 0.3) 187 of 543, 6.2 %
+ * -> 3.6 %; same meshes (docs/skin.md round 13). */
+#define SKIN_SEARCH_CELLS 48
+static int give_up_search(const fl_skin_function *sk, const double *x, uint32_t *cur,
+                          double *val)
+{
+#ifdef FL_SKIN_WALK_STATS
+    if (getenv("FL_SKIN_NO_SEARCH")) return 0; /* the before/after counts */
+#endif
+    uint32_t q[SKIN_SEARCH_CELLS];
+    int n = 1;
+    q[0] = *cur;
+    for (int h = 0; h < n && n < SKIN_SEARCH_CELLS; h++) {
+        skin_simplex s; /* only its key and k: neighbour_key */
+        size_t lo, hi;
+        if (q[h] < sk->simplex_count) {
+            s = sk->simplex[q[h]];
+            lo = sk->link_start[q[h]];
+            hi = sk->link_start[q[h] + 1];
+        } else {
+            size_t j = q[h] - sk->simplex_count;
+            for (int i = 0; i < 4; i++)
+                s.ball[i] = sk->dropped[j].ball[i];
+            s.k = sk->dropped[j].k;
+            lo = sk->dropped_link_start[j];
+            hi = sk->dropped_link_start[j + 1];
+        }
+        size_t faces = s.k > 0 ? (size_t)s.k + 1 : 0;
+        for (size_t i = 0; i < faces + (hi - lo) && n < SKIN_SEARCH_CELLS; i++) {
+            uint32_t key[4];
+            if (i < faces)
+                neighbour_key(&s, (int)i, UINT32_MAX, key);
+            else
+                neighbour_key(&s, -1, sk->link[lo + i - faces], key);
+            uint32_t id = find_simplex(sk, key);
+            int seen = id == UINT32_MAX;
+            for (int j = 0; j < n && !seen; j++)
+                seen = q[j] == id;
+            if (!seen) q[n++] = id;
+        }
+    }
+    for (int h = 1; h < n; h++) { /* q[0] is the cell the walk gave up in */
+        uint32_t next;
+        int why;
+        if (cell_test(sk, q[h], x, val, &next, &why) > 0) {
+#ifdef FL_SKIN_WALK_STATS
+            if (getenv("FL_SKIN_SEARCH_CHECK")) {
+                double sv = skin_value_scan(sk, x), v = *val;
+                if ((sv <= 0 || v <= 0) && fabs(sv - v) > 1e-9 * (1 + fabs(sv)))
+                    fprintf(stderr, "search: cell %u: %.17g, scan %.17g\n", q[h], v, sv);
+            }
+            stat_search[1]++;
+            stat_search_cells += (size_t)h;
+#endif
+            *cur = q[h];
+            return 1;
+        }
+    }
+#ifdef FL_SKIN_WALK_STATS
+    stat_search[0]++;
+    stat_search_cells += (size_t)n - 1;
+#endif
+    return 0;
+}
+
 /* The cell found (*start updated to it): a stored simplex's index, or SKIN_NO_CELL with
  * *why = SKIN_WHY_DROPPED for a dropped one (callers read stored records of the cells returned:
  * skin_root.c), *val its quadric. */
@@ -372,7 +457,7 @@ uint32_t skin_locate_why(const fl_skin_function *sk, const double x[3], uint32_t
     uint32_t cur = *start < sk->simplex_count + sk->dropped_count ? *start : 0;
 #ifdef FL_SKIN_WALK_STATS
     (void)trust_bits();
-    stat_eval++;
+    if (++stat_eval % 1000000 == 0) stats_print(); /* a run stopped early still tells */
     stat_walk++;
 #endif
     *why = 0;
@@ -382,9 +467,18 @@ uint32_t skin_locate_why(const fl_skin_function *sk, const double x[3], uint32_t
     if (skin_index_cell(sk, x, &cell) && sk->cell_start[cell] < sk->cell_start[cell + 1])
         cur = sk->cell_item[sk->cell_start[cell]];
     if (walk(sk, x, &cur, SKIN_WALK_FAR, val, why)) return found(sk, cur, start, why);
+    if (give_up_search(sk, x, &cur, val)) {
+        uint32_t r = found(sk, cur, start, why);
+        *why |= SKIN_WHY_SEARCHED;
+        return r;
+    }
 #ifdef FL_SKIN_WALK_STATS
     stat_walk--;
     stat_why[*why & 15]++;
+    {
+        size_t c = 0;
+        if (skin_index_cell(sk, x, &c)) stat_scan_items += sk->cell_start[c + 1] - sk->cell_start[c];
+    }
 #endif
     *val = skin_value_scan(sk, x);
     return SKIN_NO_CELL;

@@ -163,8 +163,29 @@ double skin_value_scan(const fl_skin_function *skin, const double x[3])
     size_t cell = 0;
     if (!skin_index_cell(skin, x, &cell)) return HUGE_VAL;
     double best = HUGE_VAL;
+    const float *box = skin->scan_box;
+    float xf[3][2]; /* x rounded down and up to float: the box test is conservative */
+    for (int c = 0; box && c < 3; c++) {
+        xf[c][0] = (float)x[c];
+        if ((double)xf[c][0] > x[c]) xf[c][0] = nextafterf(xf[c][0], -HUGE_VALF);
+        xf[c][1] = (float)x[c];
+        if ((double)xf[c][1] < x[c]) xf[c][1] = nextafterf(xf[c][1], HUGE_VALF);
+    }
     for (size_t i = skin->cell_start[cell]; i < skin->cell_start[cell + 1]; i++) {
-        double v = simplex_value(skin, &skin->simplex[skin->cell_item[i]], x);
+        uint32_t id = skin->cell_item[i];
+        if (box) { /* x outside X's registration box: X is not the minimiser of a G <= 0 */
+            const float *b = box + 6 * (size_t)id;
+            if (xf[0][1] < b[0] || xf[0][0] > b[3] || xf[1][1] < b[1] || xf[1][0] > b[4] ||
+                xf[2][1] < b[2] || xf[2][0] > b[5])
+                continue;
+        }
+#ifdef FL_SKIN_WALK_STATS
+        {
+            extern _Atomic size_t skin_stat_scan_evaluated;
+            skin_stat_scan_evaluated++;
+        }
+#endif
+        double v = simplex_value(skin, &skin->simplex[id], x);
         if (v < best) best = v;
     }
     return best;
@@ -176,6 +197,7 @@ void fl_skin_function_free(fl_skin_function *skin)
     free(skin->simplex);
     free(skin->cell_start);
     free(skin->cell_item);
+    free(skin->scan_box);
     free(skin->balls);
     free(skin->link_start);
     free(skin->link);
@@ -926,6 +948,27 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
     }
     sk->cell_start = fl_calloc_array(cells + 1, sizeof(size_t));
     if (!sk->cell_start) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    /* the registration boxes in float, rounded outwards, for the scan's per-point test */
+    sk->scan_box = fl_alloc_array(6 * sk->simplex_count + 1, sizeof(float));
+    if (!sk->scan_box) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    for (size_t i = 0; i < sk->simplex_count; i++) {
+        double blo[3], bhi[3];
+        float *b = sk->scan_box + 6 * i;
+        if (!listed(sk, &sk->simplex[i], blo, bhi)) { /* in no list; an empty box */
+            for (int c = 0; c < 3; c++) {
+                b[c] = HUGE_VALF;
+                b[c + 3] = -HUGE_VALF;
+            }
+            continue;
+        }
+        for (int c = 0; c < 3; c++) {
+            float flo = (float)blo[c], fhi = (float)bhi[c];
+            if ((double)flo > blo[c] || !isfinite(flo)) flo = nextafterf(flo, -HUGE_VALF);
+            if ((double)fhi < bhi[c] || !isfinite(fhi)) fhi = nextafterf(fhi, HUGE_VALF);
+            b[c] = flo;
+            b[c + 3] = fhi;
+        }
+    }
     for (int pass = 0; pass < 2; pass++) {
         for (size_t i = 0; i < sk->simplex_count; i++)
             register_simplex(sk, i, pass);

@@ -132,6 +132,10 @@ struct fl_skin_function {
     size_t dims[3];
     size_t *cell_start;
     uint32_t *cell_item;
+    /* The registration box of each simplex in float (lo xyz, hi xyz, rounded outwards; empty
+     * for simplices in no list): the scan skips the candidates whose box does not hold x
+     * (skin_value_scan; round 13). */
+    float *scan_box;
     /* The mixed complex for point location (skin_cell.c), only for the regular-triangulation
      * path (walkable = 1; the few-ball subset path scans): the simplices are sorted by ball[],
      * link_start/link list the link of each simplex (the balls b with X + b a simplex), balls
@@ -195,9 +199,11 @@ uint32_t skin_locate(const fl_skin_function *sk, const double x[3], uint32_t *st
  * quadric), else why it gave up and scanned: SKIN_WHY_MISSING (a neighbour not listed at all),
  * SKIN_WHY_BOX, SKIN_WHY_CAP (the step cap), SKIN_WHY_CYCLE (the walk came back to a cell it
  * had left: rounding ping-pong), or SKIN_WHY_SHAKY | the cell's SKIN_SHAKY_* bits; -1 when the
- * function is not walkable or x is not finite. */
+ * function is not walkable or x is not finite. SKIN_WHY_SEARCHED (| SKIN_WHY_DROPPED for a
+ * dropped cell): the walk gave up but the search round the cell it stopped in found x's cell
+ * (skin_cell.c, give_up_search), which answered; no scan. */
 enum { SKIN_WHY_MISSING = 1, SKIN_WHY_BOX = 2, SKIN_WHY_CAP = 3, SKIN_WHY_CYCLE = 4,
-       SKIN_WHY_DROPPED = 5, SKIN_WHY_SHAKY = 8 };
+       SKIN_WHY_DROPPED = 5, SKIN_WHY_SHAKY = 8, SKIN_WHY_SEARCHED = 16 };
 uint32_t skin_locate_why(const fl_skin_function *sk, const double x[3], uint32_t *start,
                          double *val, int *why);
 void skin_edge_root(const fl_skin_function *g, const double a[3], const double b[3], uint32_t ca,

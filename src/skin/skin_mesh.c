@@ -10,10 +10,12 @@
  * Only cubes with corners of both labels carry triangles; the cubes skipped (cube_class: far
  * from every ball, or deep inside one shrunk ball) provably have one label on all corners, so
  * skipping them drops no triangle. Placing vertices along their edges changes no incidence. */
+#define _POSIX_C_SOURCE 200809L /* getrlimit */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 
 #include "core/core.h"
 #include "skin/skin_internal.h"
@@ -549,6 +551,26 @@ static fl_status graded(const double *xyzw, size_t n, const fl_skin_options *o, 
     return st;
 }
 
+/* The graded grid's default leaf cap: the process's address-space limit (RLIMIT_AS, what the
+ * CLI's --max-memory sets; src/cli/memlimit.c) over SKIN_GRADED_LEAF_BYTES, at least
+ * 3e6 (the cap before round 13), and 3e6 without a limit. Measured on cube.off's B* (4293
+ * balls, eps 0.5) through fl_skin_mesh at grades 2, 1, 0.5: 94 193, 300 518 and 1 269 976
+ * leaves, peak RSS 79, 182 and 623 MB, i.e. 497 and 466 bytes per added leaf (the octree's
+ * corners, their Delaunay tetrahedralization, labels and the output; docs/skin.md round 13).
+ * The limit is an upper bound: the skin function and the input share it, and where they leave
+ * less the allocations fail cleanly (FL_ERR_NOMEM) under the same limit. The npm bunny at
+ * grade 4 (6 719 553 leaves) needs about 3.4 GB of it, so --max-memory 14G allows it. */
+#define SKIN_GRADED_LEAF_BYTES 512
+#define SKIN_GRADED_LEAF_MIN 3000000
+static size_t graded_leaf_cap(void)
+{
+    struct rlimit r;
+    if (getrlimit(RLIMIT_AS, &r) != 0 || r.rlim_cur == RLIM_INFINITY) return SKIN_GRADED_LEAF_MIN;
+    double cap = (double)r.rlim_cur / SKIN_GRADED_LEAF_BYTES;
+    if (cap < SKIN_GRADED_LEAF_MIN) return SKIN_GRADED_LEAF_MIN;
+    return cap > 4e9 ? (size_t)4e9 : (size_t)cap; /* corners are numbered by uint32_t */
+}
+
 fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
                        fl_skin_stats *stats, fl_error *err)
 {
@@ -558,7 +580,7 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
     fl_skin_options o = {0};
     if (opt) o = *opt;
     if (o.t == 0) o.t = 0.5;
-    if (o.max_cubes == 0) o.max_cubes = o.grade > 0 ? 3000000 : 50000000;
+    if (o.max_cubes == 0) o.max_cubes = o.grade > 0 ? graded_leaf_cap() : 50000000;
     if (!(o.cell >= 0) || !isfinite(o.cell) || !(o.grade >= 0) || !isfinite(o.grade))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "skin: cell and grade must be finite numbers >= 0");

@@ -22,6 +22,10 @@
  *    enter (almost no walk stops at a missing neighbour) and scans for fewer than 5 % (cube)
  *    and 10 % (sphere) of the queries (8.7 % and 28 % with the dropped cells skipped, 8.7 %
  *    and 13 % without going round);
+ *  - where the mesher's walk gives up (a cycle, the step cap, a missing neighbour) the search
+ *    over the faces and cofaces round its last cell (round 13, skin_cell.c give_up_search)
+ *    answers at some of those points, each equal to the scan wherever either is <= 0, and the
+ *    scans fall (cube B*: 174 -> 107 of 6000 queries);
  *  - skin_link_sign_exact agrees with the floating-point link test wherever that one is far
  *    from 0, and with a recomputation in shifted coordinates (translation by a power of two:
  *    the same exact value) everywhere. */
@@ -195,6 +199,9 @@ static void test_degenerate_sets_walk_equals_scan(void)
  * left to the scan, and of those the ones that met a neighbour in neither list. */
 typedef struct walk_counts {
     int in_sliver, in_dropped, scans, missing;
+    /* answers of the search round the cell a walk gave up in (SKIN_WHY_SEARCHED; round 13),
+     * and of those the ones where G <= 0 (compared with the scan's value) */
+    int searched, searched_negative;
     int dropped_checked; /* in_dropped answers equal to the full function's walk */
 } walk_counts;
 
@@ -228,7 +235,11 @@ static void mesher_walk_vs_scan(const double *b, size_t n, int q_count, walk_cou
         int why = 0;
         uint32_t cell = skin_locate_why(g, x, &start, &w, &why);
         double s = skin_value_scan(g, x);
-        wc->scans += why != 0 && why != SKIN_WHY_DROPPED;
+        int searched = why > 0 && (why & SKIN_WHY_SEARCHED);
+        if (searched) why &= ~SKIN_WHY_SEARCHED;
+        wc->searched += searched;
+        wc->searched_negative += searched && s <= 0;
+        wc->scans += !searched && why != 0 && why != SKIN_WHY_DROPPED;
         wc->missing += why == SKIN_WHY_MISSING;
         wc->in_dropped += why == SKIN_WHY_DROPPED;
         wc->in_sliver += cell != SKIN_NO_CELL && (g->simplex[cell].shaky & SKIN_SHAKY_SLIVER);
@@ -283,6 +294,12 @@ static void test_bstar_of_cube_walks_through_slivers(void)
     CHECK_MSG(wc.in_sliver > q / 20, "cube B* (%zu balls): %d answers in faces of slivers",
               a.star.count, wc.in_sliver);
     CHECK_MSG(wc.scans < q / 20, "cube B*: %d of %d queries scanned", wc.scans, q);
+    /* where the walk gives up, the search round its last cell answers (round 13: 36 of these
+     * 6000 points, 24 of them with G <= 0, each compared with the scan by mesher_walk_vs_scan;
+     * without it 174 scans instead of 107, and this check fails) */
+    CHECK_MSG(wc.searched >= q / 300 && wc.searched_negative >= q / 600 && wc.scans <= q / 50,
+              "cube B*: %d answers of the give-up search (%d with G <= 0), %d scans",
+              wc.searched, wc.searched_negative, wc.scans);
     /* the walk crosses the dropped cells (it scanned at 762 of these 6000 points when it gave
      * up at them, round 11) */
     /* and round the flat simplices it cannot enter (skin_cell.c; 520 scans and 346 stopped by
@@ -290,8 +307,9 @@ static void test_bstar_of_cube_walks_through_slivers(void)
     CHECK_MSG(wc.in_dropped > q / 50 && wc.missing <= q / 100, "cube B*: %d answers in dropped "
               "cells, %d walks stopped by a missing neighbour", wc.in_dropped, wc.missing);
     printf("cube B*: %d of %d scanned, %d in dropped cells (%d equal to the full function's "
-           "walk), %d in faces of slivers\n", wc.scans, q, wc.in_dropped, wc.dropped_checked,
-           wc.in_sliver);
+           "walk), %d in faces of slivers, %d found by the give-up search (%d with G <= 0)\n",
+           wc.scans, q, wc.in_dropped, wc.dropped_checked, wc.in_sliver, wc.searched,
+           wc.searched_negative);
     fl_skin_approx_free(&a);
 }
 
@@ -432,8 +450,9 @@ static void test_focus_sphere_walks_through_slivers(void)
     CHECK_MSG(wc.in_sliver > q / 50, "focus sphere (%zu balls): %d answers in faces of slivers",
               n, wc.in_sliver);
     CHECK_MSG(wc.scans < q * 3 / 10, "focus sphere: %d of %d queries scanned", wc.scans, q);
-    printf("focus sphere: %d of %d scanned, %d in dropped cells, %d in faces of slivers\n",
-           wc.scans, q, wc.in_dropped, wc.in_sliver);
+    printf("focus sphere: %d of %d scanned, %d in dropped cells, %d in faces of slivers, %d "
+           "found by the give-up search (%d with G <= 0)\n", wc.scans, q, wc.in_dropped,
+           wc.in_sliver, wc.searched, wc.searched_negative);
 }
 
 /* B* of the geodesic sphere (eps 0.3, one round): the walk answers in the dropped cells of its
@@ -454,11 +473,17 @@ static void test_bstar_of_sphere_crosses_dropped_cells(void)
     walk_counts wc;
     bstar_walk_vs_scan(&m, 0.3, q, &a, &wc);
     printf("sphere B* (%zu balls): %d of %d scanned, %d in dropped cells (%d equal to the full "
-           "function's walk), %d in faces of slivers\n", a.star.count, wc.scans, q, wc.in_dropped,
-           wc.dropped_checked, wc.in_sliver);
+           "function's walk), %d in faces of slivers, %d found by the give-up search (%d with "
+           "G <= 0)\n", a.star.count, wc.scans, q, wc.in_dropped, wc.dropped_checked,
+           wc.in_sliver, wc.searched, wc.searched_negative);
     CHECK_MSG(wc.in_dropped > q / 50 && wc.dropped_checked > wc.in_dropped / 2,
               "sphere B*: %d answers in dropped cells, %d checked against the full function",
               wc.in_dropped, wc.dropped_checked);
+    /* the give-up search (round 13): 45 answers, 28 with G <= 0, compared with the scan (520
+     * scans without it instead of 471) */
+    CHECK_MSG(wc.searched >= q / 300 && wc.searched_negative >= q / 600,
+              "sphere B*: %d answers of the give-up search (%d with G <= 0)", wc.searched,
+              wc.searched_negative);
     CHECK_MSG(wc.scans < q / 10 && wc.missing <= q / 100,
               "sphere B*: %d of %d queries scanned, %d stopped by a missing neighbour", wc.scans,
               q, wc.missing);

@@ -39,13 +39,6 @@
 #define SKIN_WALK_NEAR 8
 #define SKIN_WALK_FAR 256
 
-static int key_cmp(const uint32_t *a, const uint32_t *b)
-{
-    for (int i = 0; i < 4; i++)
-        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
-    return 0;
-}
-
 /* The position of key in n records of size bytes, sorted by their ball[4] field at offset
  * off (the stored skin_simplex and the dropped skin_light lists), or SIZE_MAX. */
 static size_t key_search(const void *base, size_t n, size_t size, size_t off,
@@ -54,7 +47,7 @@ static size_t key_search(const void *base, size_t n, size_t size, size_t off,
     size_t lo = 0, hi = n;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        int c = key_cmp((const uint32_t *)((const char *)base + mid * size + off), key);
+        int c = skin_key_cmp((const uint32_t *)((const char *)base + mid * size + off), key);
         if (c == 0) return mid;
         if (c < 0)
             lo = mid + 1;
@@ -377,20 +370,23 @@ static int give_up_search(const fl_skin_function *sk, const double *x, uint32_t 
     int n = 1;
     q[0] = *cur;
     for (int h = 0; h < n && n < SKIN_SEARCH_CELLS; h++) {
-        skin_simplex s; /* only its key and k: neighbour_key */
+        skin_simplex s; /* only its key and k are set: all neighbour_key reads */
+        const uint32_t *ball;
         size_t lo, hi;
         if (q[h] < sk->simplex_count) {
-            s = sk->simplex[q[h]];
+            ball = sk->simplex[q[h]].ball;
+            s.k = sk->simplex[q[h]].k;
             lo = sk->link_start[q[h]];
             hi = sk->link_start[q[h] + 1];
         } else {
             size_t j = q[h] - sk->simplex_count;
-            for (int i = 0; i < 4; i++)
-                s.ball[i] = sk->dropped[j].ball[i];
+            ball = sk->dropped[j].ball;
             s.k = sk->dropped[j].k;
             lo = sk->dropped_link_start[j];
             hi = sk->dropped_link_start[j + 1];
         }
+        for (int i = 0; i < 4; i++)
+            s.ball[i] = ball[i];
         size_t faces = s.k > 0 ? (size_t)s.k + 1 : 0;
         for (size_t i = 0; i < faces + (hi - lo) && n < SKIN_SEARCH_CELLS; i++) {
             uint32_t key[4];

@@ -44,6 +44,7 @@
 
 #include "core/core.h"
 #include "predicates/predicates_internal.h"
+#include "skin/skin_internal.h"
 
 enum { LINK_TEST = 0, POWER_TEST = 1 };
 
@@ -57,16 +58,9 @@ typedef struct simplex_rec {
     int in;
 } simplex_rec;
 
-static int cmp_key(const uint32_t *a, const uint32_t *b)
-{
-    for (int i = 0; i < 4; i++)
-        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
-    return 0;
-}
-
 static int cmp_rec(const void *pa, const void *pb)
 {
-    return cmp_key(((const simplex_rec *)pa)->v, ((const simplex_rec *)pb)->v);
+    return skin_key_cmp(((const simplex_rec *)pa)->v, ((const simplex_rec *)pb)->v);
 }
 
 /* The 24 permutations of 0..3 and their signs (Leibniz expansion of a determinant). A
@@ -368,7 +362,7 @@ static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *ch
         count = 0;
         for (size_t i = 0; i < m;) {
             size_t j = i + 1;
-            while (j < m && !cmp_key(e[j].v, e[i].v))
+            while (j < m && !skin_key_cmp(e[j].v, e[i].v))
                 j++;
             int in = decide(balls, e + i, j - i, k);
             if (in < 0) goto nomem;

@@ -286,10 +286,7 @@ typedef struct rt_tuple {
 
 static int cmp_tuple(const void *pa, const void *pb)
 {
-    const rt_tuple *a = pa, *b = pb;
-    for (int i = 0; i < 4; i++)
-        if (a->v[i] != b->v[i]) return a->v[i] < b->v[i] ? -1 : 1;
-    return 0;
+    return skin_key_cmp(((const rt_tuple *)pa)->v, ((const rt_tuple *)pb)->v);
 }
 
 static void sort_small(uint32_t *a, int n)

@@ -70,6 +70,14 @@ int skin_simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simp
 int skin_link_sign_exact(const double *balls, const skin_simplex *s, uint32_t b,
                          const double x[3], double t);
 
+/* Lexicographic order of two sorted, UINT32_MAX-padded ball keys of a simplex. */
+static inline int skin_key_cmp(const uint32_t *a, const uint32_t *b)
+{
+    for (int i = 0; i < 4; i++)
+        if (a[i] != b[i]) return a[i] < b[i] ? -1 : 1;
+    return 0;
+}
+
 /* The frame of s from the balls (x, y, z, w each): a = the centre of its first ball and
  * e_j = z_j - a, j < k (rows k.. are zero). */
 static inline void skin_frame(const double *balls, const skin_simplex *s, double a[3],

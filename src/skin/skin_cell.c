@@ -277,7 +277,7 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         *why = WHY_SHAKY | SHAKY(s);
         return -1;
     }
-    for (int c = 0; s->box_exact && c < 3; c++) { /* t v = ut + t a within t box(nu_X) */
+    for (int c = 0; s->box_exact == SKIN_BOX_VORONOI && c < 3; c++) { /* t v in t box(nu_X) */
         double tv = ut[c] + t * a[c];
         double pad = SKIN_WALK_SLACK * (fabs(tv) + t * (fabs(s->nu_lo[c]) + fabs(s->nu_hi[c])));
         if (!(tv >= t * s->nu_lo[c] - pad && tv <= t * s->nu_hi[c] + pad)) {

@@ -213,15 +213,11 @@ static void simplex_box(const double *balls, const skin_simplex *s, double lo[3]
 static double dot3(const double *u, const double *v);
 static void cross3(const double *u, const double *v, double *w);
 
-/* How far around a simplex X its fallback index cells reach, in units of X's reach: the index
- * then lists X wherever G < (margin^2 - 1) t max w_X could have X as the minimiser, so G is
- * exact there, not only where it is negative; the mesher's root finding along grid edges
- * (skin_mesh.c) needs values on the outside end of an edge to converge fast. */
-#define SKIN_REACH_MARGIN 1.5
 
 /* The box where the index lists s: its mixed cell's box (1-t) box(X) + t box(nu_X) cut to the
- * reach box when s->box_exact (nu_lo/nu_hi bound its power face), the reach box alone
- * otherwise; empty on some axis (lo > hi) when the two do not meet. */
+ * reach box when s->box_exact (nu_lo/nu_hi bound its power face, from the Voronoi vertices or
+ * clipped, skin_clip.c), the reach box alone otherwise; empty on some axis (lo > hi) when the
+ * two do not meet. */
 static void reg_box(const double *balls, double t, const skin_simplex *s, double lo[3],
                     double hi[3])
 {
@@ -247,7 +243,7 @@ static int add_simplex(fl_vec *v, const double *xyzw, const uint32_t *idx, int k
 {
     skin_simplex s;
     if (skin_simplex_setup(xyzw, idx, k, &s)) return 0; /* affinely dependent: never a minimiser */
-    s.box_exact = nu_lo != NULL;
+    s.box_exact = nu_lo != NULL ? SKIN_BOX_VORONOI : 0;
     for (int c = 0; nu_lo && c < 3; c++) {
         s.nu_lo[c] = nu_lo[c];
         s.nu_hi[c] = nu_hi[c];
@@ -818,7 +814,8 @@ static void cell_centre(const fl_skin_function *sk, size_t x, size_t y, size_t z
 /* Whether the index lists s at all, with its registration box (reg_box): simplices without a
  * positive ball are never the minimiser of a negative G, and a mixed cell beyond the reach of
  * its simplex only holds G >= 0. */
-static int listed(const fl_skin_function *sk, const skin_simplex *s, double lo[3], double hi[3])
+int skin_listed_box(const fl_skin_function *sk, const skin_simplex *s, double lo[3],
+                    double hi[3])
 {
     if (!(skin_reach(sk->balls, s, sk->t) > 0)) return 0;
     reg_box(sk->balls, sk->t, s, lo, hi);
@@ -832,7 +829,7 @@ static double register_simplex(fl_skin_function *sk, size_t i, int pass)
     size_t c0[3], c1[3];
     double lo[3], hi[3];
     const skin_simplex *s = &sk->simplex[i];
-    if (!listed(sk, s, lo, hi)) return 0;
+    if (!skin_listed_box(sk, s, lo, hi)) return 0;
     simplex_cells(sk, lo, hi, c0, c1);
     if (pass == 2) /* the budget estimate: the box's cells, an upper bound, without the tests */
         return (double)(c1[0] - c0[0] + 1) * (double)(c1[1] - c0[1] + 1) *
@@ -846,7 +843,8 @@ static double register_simplex(fl_skin_function *sk, size_t i, int pass)
             for (size_t x = c0[0]; x <= c1[0]; x++) {
                 double c[3];
                 cell_centre(sk, x, y, z, c);
-                if (!s->box_exact && !may_be_near(sk->balls, s, c, d)) continue;
+                if (s->box_exact != SKIN_BOX_VORONOI && !may_be_near(sk->balls, s, c, d))
+                    continue;
                 count++;
                 size_t id = (z * sk->dims[1] + y) * sk->dims[0] + x;
                 if (pass == 0)
@@ -877,7 +875,7 @@ static fl_status index_box(const fl_skin_function *sk, double lo[3], double hi[3
     }
     for (size_t i = 0; i < sk->simplex_count; i++) {
         double slo[3], shi[3];
-        if (!listed(sk, &sk->simplex[i], slo, shi)) continue;
+        if (!skin_listed_box(sk, &sk->simplex[i], slo, shi)) continue;
         double side = 0;
         for (int c = 0; c < 3; c++) {
             lo[c] = fmin(lo[c], slo[c]);
@@ -951,7 +949,7 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
     for (size_t i = 0; i < sk->simplex_count; i++) {
         double blo[3], bhi[3];
         float *b = sk->scan_box + 6 * i;
-        if (!listed(sk, &sk->simplex[i], blo, bhi)) { /* in no list; an empty box */
+        if (!skin_listed_box(sk, &sk->simplex[i], blo, bhi)) { /* in no list; an empty box */
             for (int c = 0; c < 3; c++) {
                 b[c] = HUGE_VALF;
                 b[c + 3] = -HUGE_VALF;
@@ -1045,6 +1043,7 @@ static fl_status function_new(const double *xyzw, size_t n, double t, int positi
                     (sk->dropped_link_start[sk->dropped_count] - sk->dropped_link_start[0]) *
                         sizeof(uint32_t));
 #endif
+    if (!st && !skin_clip_off) st = skin_clip_boxes(sk, SKIN_REACH_MARGIN, err);
     if (!st) st = build_index(sk, err);
     if (st) {
         fl_skin_function_free(sk);

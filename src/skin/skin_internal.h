@@ -26,14 +26,16 @@
 typedef struct skin_simplex {
     double ginv[3][3];
     double mu_f[3];
-    /* box_exact only: the box of X's power face nu_X (the Voronoi vertices around X with their
-     * rounding pads). The walk requires v in it as well as the link tests: for a degenerate nu_X
-     * (cospherical balls, as in B* of symmetric solids) the link half-spaces all pass through
-     * one point and bound a wedge, not the face. It also bounds where the index lists X: the
-     * box of X's mixed cell (1-t) X + t nu_X when box_exact, else X's box grown by
-     * SKIN_REACH_MARGIN times the reach (hull simplices, whose power face nu_X is unbounded,
-     * faces of slivers whose Voronoi vertex is not trustworthy, and the subsets of few balls)
-     * with a finer nearness test (skin_function.c). */
+    /* box_exact SKIN_BOX_VORONOI: the box of X's power face nu_X (the Voronoi vertices around
+     * X with their rounding pads). The walk requires v in it as well as the link tests: for a
+     * degenerate nu_X (cospherical balls, as in B* of symmetric solids) the link half-spaces
+     * all pass through one point and bound a wedge, not the face. SKIN_BOX_CLIPPED (hull
+     * simplices, whose power face is unbounded, and faces of slivers, whose Voronoi vertex is
+     * not trustworthy; skin_clip.c): a box of the part of nu_X that can meet X's reach box,
+     * from the link half-spaces; the index only. Either bounds where the index lists X: the
+     * box of X's mixed cell (1-t) X + t nu_X cut to X's box grown by SKIN_REACH_MARGIN times
+     * the reach; with box_exact 0 (the subsets of few balls, clips that degenerate) the reach
+     * box alone, with a finer nearness test (skin_function.c). */
     double nu_lo[3], nu_hi[3];
     /* The balls of X, sorted, UINT32_MAX padding (the key the mixed-cell walk looks faces and
      * cofaces up by; skin_cell.c). */
@@ -69,6 +71,12 @@ int skin_simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simp
  * be decided (k = 3, inputs beyond its integer range, out of memory). */
 int skin_link_sign_exact(const double *balls, const skin_simplex *s, uint32_t b,
                          const double x[3], double t);
+/* The same sign: skin_link_sign_exact first tries a floating-point evaluation with a
+ * rigorous error bound (round 14) and calls this big-integer evaluation only when the bound
+ * does not decide; tests compare the two (skin_link_filter_off nonzero skips the filter). */
+int skin_link_sign_big(const double *balls, const skin_simplex *s, uint32_t b,
+                       const double x[3], double t);
+extern int skin_link_filter_off;
 
 /* Lexicographic order of two sorted, UINT32_MAX-padded ball keys of a simplex. */
 static inline int skin_key_cmp(const uint32_t *a, const uint32_t *b)
@@ -185,6 +193,26 @@ int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cel
  * 360 bytes (docs/skin.md). */
 fl_status skin_function_new_mesher(const double *xyzw, size_t n, double t,
                                    fl_skin_function **out, fl_error *err);
+/* skin_clip_boxes (skin_clip.c): for the simplices whose power-face box is not known from
+ * Voronoi vertices (faces of slivers, hull simplices; box_exact 0), a conservative box of the
+ * part of nu_X that can meet the reach box, from the link half-spaces; sets nu_lo/nu_hi and
+ * box_exact = SKIN_BOX_CLIPPED where it succeeds. Only the index uses it (reg_box); the walk's
+ * box test reads box_exact == SKIN_BOX_VORONOI boxes only. margin: SKIN_REACH_MARGIN. */
+/* How far around a simplex X its fallback index cells reach, in units of X's reach: the index
+ * then lists X wherever G < (margin^2 - 1) t max w_X could have X as the minimiser, so G is
+ * exact there, not only where it is negative; the mesher's root finding along grid edges
+ * (skin_mesh.c) needs values on the outside end of an edge to converge fast. */
+#define SKIN_REACH_MARGIN 1.5
+#define SKIN_BOX_VORONOI 1
+#define SKIN_BOX_CLIPPED 2
+fl_status skin_clip_boxes(fl_skin_function *sk, double margin, fl_error *err);
+/* Tests only: nonzero makes the functions built afterwards skip skin_clip_boxes (the index
+ * then lists those simplices in their whole reach box, as before round 14). */
+extern int skin_clip_off;
+/* Whether the index lists s, with the box it lists s in (its mixed cell's box cut to its reach
+ * box; skin_function.c). */
+int skin_listed_box(const fl_skin_function *sk, const skin_simplex *s, double lo[3],
+                    double hi[3]);
 /* end of mixed-cell point location */
 
 

@@ -14,6 +14,7 @@
  * within its rounding band: on the faces of B*'s nearly flat tetrahedra the link test of the
  * fourth ball is almost constant along aff nu_X, so the band covers most of the line
  * (docs/skin.md, "The bunny", round 11). */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -57,8 +58,105 @@ static int low_exp_min(double v, int *emin)
     return 0;
 }
 
+/* A floating-point value with a bound on its distance to the exact value of the same
+ * expression: every operation adds its own rounding (U |result|) and the propagated bounds,
+ * and the sum of bounds is inflated by (1 + 8U) for the rounding of the bound itself. */
+typedef struct ev {
+    double v, e;
+} ev;
+#define EV_U (DBL_EPSILON / 2)
+
+static ev ev_in(double v)
+{
+    return (ev){v, 0};
+}
+
+static ev ev_add(ev a, ev b, double sg)
+{
+    double v = a.v + sg * b.v;
+    return (ev){v, (a.e + b.e + EV_U * fabs(v)) * (1 + 8 * EV_U)};
+}
+
+static ev ev_mul(ev a, ev b)
+{
+    double v = a.v * b.v;
+    /* 0x1p-1070: the rounding of a product in the subnormal range is absolute */
+    return (ev){v, (fabs(a.v) * b.e + fabs(b.v) * a.e + a.e * b.e + EV_U * fabs(v) + 0x1p-1070) *
+                       (1 + 8 * EV_U)};
+}
+
+static ev ev_dot(const ev *u, const ev *w)
+{
+    ev r = ev_mul(u[0], w[0]);
+    r = ev_add(r, ev_mul(u[1], w[1]), 1);
+    return ev_add(r, ev_mul(u[2], w[2]), 1);
+}
+
+/* The sign of skin_link_sign_exact's determinant in floating point with a bound on its error
+ * (the same matrix with its last row multiplied by the positive 2^et: t (|e_j|^2 - w_j + w_0)
+ * - 2 e_j.d), or 0 when the bound does not decide it. Inputs of magnitude 0 or in
+ * [2^-100, 2^100] keep every product of the degree-6 determinant far from overflow, and a
+ * product's underflow is covered by its absolute term; other inputs are decided exactly. */
+static int link_sign_filter(const double *const *pts, int k, double t)
+{
+    for (int i = 0; i < 5; i++)
+        for (int c = 0; c < 4 && (c < 3 || i < 4); c++) {
+            double v = fabs(pts[i][c]);
+            if (!(v <= 0x1p100) || (v != 0 && v < 0x1p-100)) return 0;
+        }
+    ev E[3][3], D[3], M[3][3], tt = ev_in(t);
+    int rowof[3] = {1, 2, 3};
+    rowof[k] = 3;
+    for (int j = 0; j <= k; j++)
+        for (int c = 0; c < 3; c++)
+            E[j][c] = ev_add(ev_in(pts[rowof[j]][c]), ev_in(pts[0][c]), -1);
+    for (int c = 0; c < 3; c++)
+        D[c] = ev_add(ev_in(pts[4][c]), ev_in(pts[0][c]), -1);
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j <= k; j++)
+            M[i][j] = ev_dot(E[i], E[j]);
+    for (int j = 0; j <= k; j++) {
+        ev q = ev_add(ev_dot(E[j], E[j]), ev_in(pts[rowof[j]][3]), -1);
+        q = ev_add(q, ev_in(pts[0][3]), 1);
+        ev dd = ev_dot(E[j], D);
+        M[k][j] = ev_add(ev_mul(tt, q), ev_add(dd, dd, 1), -1);
+    }
+    ev det;
+    if (k == 0) {
+        det = M[0][0];
+    } else if (k == 1) {
+        det = ev_add(ev_mul(M[0][0], M[1][1]), ev_mul(M[0][1], M[1][0]), -1);
+    } else {
+        static const int cof[3][2] = {{1, 2}, {0, 2}, {0, 1}};
+        det = ev_in(0);
+        for (int j = 0; j < 3; j++) {
+            int c0 = cof[j][0], c1 = cof[j][1];
+            ev m2 = ev_add(ev_mul(M[1][c0], M[2][c1]), ev_mul(M[1][c1], M[2][c0]), -1);
+            det = ev_add(det, ev_mul(M[0][j], m2), j == 1 ? -1 : 1);
+        }
+    }
+    if (!(isfinite(det.v) && isfinite(det.e))) return 0;
+    return det.v > det.e ? 1 : det.v < -det.e ? -1 : 0;
+}
+
 int skin_link_sign_exact(const double *balls, const skin_simplex *s, uint32_t b,
                          const double x[3], double t)
+{
+    if (s->k <= 2 && t > 0 && t < 1) {
+        const double *zb = balls + 4 * (size_t)b;
+        const double *z0 = balls + 4 * (size_t)s->ball[0];
+        const double *pts[5] = {z0, s->k > 0 ? balls + 4 * (size_t)s->ball[1] : zb,
+                                s->k > 1 ? balls + 4 * (size_t)s->ball[2] : zb, zb, x};
+        int sg = skin_link_filter_off ? 0 : link_sign_filter(pts, s->k, t);
+        if (sg) return sg;
+    }
+    return skin_link_sign_big(balls, s, b, x, t);
+}
+
+int skin_link_filter_off;
+
+int skin_link_sign_big(const double *balls, const skin_simplex *s, uint32_t b,
+                       const double x[3], double t)
 {
     int k = s->k;
     if (k > 2 || !(t > 0 && t < 1)) return 2;

@@ -564,6 +564,68 @@ static void test_link_sign_exact_matches(void)
     CHECK_MSG(checked > 300 && agree == checked, "%d of %d signs agree", agree, checked);
 }
 
+/* The floating-point filter in front of skin_link_sign_exact (round 14) against the big-integer
+ * evaluation alone: the same sign on random inputs, on a coarse lattice (integer coordinates,
+ * weights and x in [0, 2]: many exact zeros, which the filter must leave to
+ * the integers) and on nearly flat configurations (the link ball 2^-40 off the plane or line
+ * of X; half of them with x bisected to the last bits of the test's zero set), with the filter
+ * deciding most of the random ones. */
+static void test_link_sign_filter_matches_big(void)
+{
+    double b[4 * 4];
+    int decided = 0, zeros = 0, n = 6000;
+    for (int round = 0; round < n; round++) {
+        int kind = round % 3, k = (round / 3) % 3;
+        for (int i = 0; i < 4; i++) {
+            for (int c = 0; c < 3; c++)
+                b[4 * i + c] = kind == 1 ? floor(3 * rnd()) : 3 * rnd();
+            b[4 * i + 3] = kind == 1 ? floor(3 * rnd()) : 0.1 + rnd();
+        }
+        if (kind == 2) { /* the link ball (3) nearly in aff X, X = balls 0..k */
+            double m[3];
+            for (int c = 0; c < 3; c++) {
+                double l0 = rnd(), l1 = k > 0 ? rnd() : 0;
+                m[c] = b[c] + l0 * (k > 0 ? b[4 + c] - b[c] : 0) +
+                       l1 * (k > 1 ? b[8 + c] - b[c] : 0);
+                b[12 + c] = m[c] + ldexp(rnd() - 0.5, -40);
+            }
+        }
+        skin_simplex s;
+        s.k = (uint8_t)k;
+        for (int i = 0; i < 4; i++)
+            s.ball[i] = i <= k ? (uint32_t)i : UINT32_MAX;
+        double x[3];
+        for (int c = 0; c < 3; c++)
+            x[c] = kind == 1 ? floor(3 * rnd()) : 3 * rnd();
+        double t = round % 4 ? 0.5 : 0.375;
+        if (kind == 2 && round % 2) { /* x bisected onto the test's zero set */
+            double y[3], m[3];
+            for (int c = 0; c < 3; c++)
+                y[c] = 3 * rnd();
+            int sx = skin_link_sign_big(b, &s, 3, x, t), sy = skin_link_sign_big(b, &s, 3, y, t);
+            for (int it = 0; it < 80 && sx * sy < 0; it++) {
+                for (int c = 0; c < 3; c++)
+                    m[c] = 0.5 * (x[c] + y[c]);
+                int sm = skin_link_sign_big(b, &s, 3, m, t);
+                if (sm == 0) break;
+                for (int c = 0; c < 3; c++)
+                    (sm == sx ? x : y)[c] = m[c];
+            }
+        }
+        int big = skin_link_sign_big(b, &s, 3, x, t);
+        skin_link_filter_off = 1;
+        int off = skin_link_sign_exact(b, &s, 3, x, t);
+        skin_link_filter_off = 0;
+        int on = skin_link_sign_exact(b, &s, 3, x, t);
+        CHECK_MSG(on == big && off == big, "round %d (kind %d, k %d): filter %d, off %d, big %d",
+                  round, kind, k, on, off, big);
+        zeros += big == 0;
+        decided += kind == 0 && on != 0; /* random: the filter decides unless it is 0 */
+    }
+    CHECK_MSG(zeros > 100 && decided > n / 3 - 20, "%d zero signs, %d random decided", zeros,
+              decided);
+}
+
 int main(void)
 {
     static const fl_test_case cases[] = {
@@ -574,6 +636,7 @@ int main(void)
         FL_TEST_CASE(test_focus_sphere_walks_through_slivers),
         FL_TEST_CASE(test_bstar_of_sphere_crosses_dropped_cells),
         FL_TEST_CASE(test_link_sign_exact_matches),
+        FL_TEST_CASE(test_link_sign_filter_matches_big),
     };
     return fl_test_run(cases, sizeof cases / sizeof cases[0]);
 }

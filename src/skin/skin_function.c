@@ -803,6 +803,54 @@ static int may_be_near(const double *balls, const skin_simplex *s, const double 
     return 1;
 }
 
+/* The barycentric coordinates mu_i of z* as affine functions of x (mu_0 = 1 - the others):
+ * their values at c and the lengths of their gradients, for the prism test below. */
+typedef struct bary_map {
+    double a[3], grad[4][3], base[4], glen[4];
+    int k;
+} bary_map;
+
+static void bary_setup(const fl_skin_function *sk, const skin_simplex *s, bary_map *m)
+{
+    double e[3][3], t = sk->t;
+    m->k = s->k;
+    skin_frame(sk->balls, s, m->a, e);
+    /* mu_i = mu_f_i + (xi_i - mu_f_i) / (1 - t), xi = ginv E^T (x - a): i = 1..k */
+    double sum[3] = {0, 0, 0}, base0 = 1;
+    for (int i = 0; i < s->k; i++) {
+        for (int c = 0; c < 3; c++) {
+            double gv = 0;
+            for (int j = 0; j < s->k; j++)
+                gv += s->ginv[i][j] * e[j][c];
+            m->grad[i + 1][c] = gv / (1 - t);
+            sum[c] += m->grad[i + 1][c];
+        }
+        m->base[i + 1] = s->mu_f[i] - s->mu_f[i] / (1 - t); /* mu_i at x = a */
+        base0 -= m->base[i + 1];
+    }
+    m->base[0] = base0;
+    for (int c = 0; c < 3; c++)
+        m->grad[0][c] = -sum[c];
+    for (int i = 0; i <= s->k; i++)
+        m->glen[i] = sqrt(dot3(m->grad[i], m->grad[i]));
+}
+
+/* 0 only when no point within h of c has z* in X (some mu_i < 0 on the whole ball): x in the
+ * mixed cell of X needs z* in X. Keeps the thin prisms of edges and triangles whose power face
+ * is long (faces of slivers) out of the cells beside them. */
+static int prism_near(const bary_map *m, const double c[3], double h)
+{
+    double d[3] = {c[0] - m->a[0], c[1] - m->a[1], c[2] - m->a[2]}, dl = sqrt(dot3(d, d));
+    for (int i = 0; i <= m->k; i++) {
+        double mu = m->base[i] + dot3(m->grad[i], d);
+        /* 1e-9 of the terms' sizes: far above the rounding of mu here and in the scan (the
+         * Gram condition is <= 1e10 without SKIN_SHAKY_COND), and above its SKIN_BARY_SLACK */
+        double slack = 1e-9 * (1 + fabs(m->base[i]) + m->glen[i] * (dl + h));
+        if (mu < -h * m->glen[i] - slack) return 0;
+    }
+    return 1;
+}
+
 /* Cell centre of cell (x, y, z). */
 static void cell_centre(const fl_skin_function *sk, size_t x, size_t y, size_t z, double c[3])
 {
@@ -837,7 +885,10 @@ static double register_simplex(fl_skin_function *sk, size_t i, int pass)
     /* a cell holds a point within the reach iff its centre is within reach + half diagonal */
     double reach = skin_reach(sk->balls, s, sk->t);
     double d = (SKIN_REACH_MARGIN * reach + 0.8660254037844387 * sk->cell) * (1 + 1e-9);
-    double count = 0;
+    double count = 0, h = 0.8660254037844387 * sk->cell;
+    int prism = s->box_exact != SKIN_BOX_VORONOI && s->k > 0 && !(s->shaky & SKIN_SHAKY_COND);
+    bary_map bm;
+    if (prism) bary_setup(sk, s, &bm);
     for (size_t z = c0[2]; z <= c1[2]; z++)
         for (size_t y = c0[1]; y <= c1[1]; y++)
             for (size_t x = c0[0]; x <= c1[0]; x++) {
@@ -845,6 +896,7 @@ static double register_simplex(fl_skin_function *sk, size_t i, int pass)
                 cell_centre(sk, x, y, z, c);
                 if (s->box_exact != SKIN_BOX_VORONOI && !may_be_near(sk->balls, s, c, d))
                     continue;
+                if (prism && !prism_near(&bm, c, h)) continue;
                 count++;
                 size_t id = (z * sk->dims[1] + y) * sk->dims[0] + x;
                 if (pass == 0)

@@ -296,8 +296,10 @@ static void test_bstar_of_cube_walks_through_slivers(void)
     CHECK_MSG(wc.scans < q / 20, "cube B*: %d of %d queries scanned", wc.scans, q);
     /* where the walk gives up, the search round its last cell answers (round 13: 36 of these
      * 6000 points, 24 of them with G <= 0, each compared with the scan by mesher_walk_vs_scan;
-     * without it 174 scans instead of 107, and this check fails) */
-    CHECK_MSG(wc.searched >= q / 300 && wc.searched_negative >= q / 600 && wc.scans <= q / 50,
+     * without it 174 scans instead of 107. Round 14's index (clipped power faces, prism test)
+     * changed the cells the far walk restarts from: 38 answers, 131 scans, 197 without the
+     * search; this check fails without it) */
+    CHECK_MSG(wc.searched >= q / 300 && wc.searched_negative >= q / 600 && wc.scans <= q / 40,
               "cube B*: %d answers of the give-up search (%d with G <= 0), %d scans",
               wc.searched, wc.searched_negative, wc.scans);
     /* the walk crosses the dropped cells (it scanned at 762 of these 6000 points when it gave

@@ -62,12 +62,15 @@ static size_t key_search(const void *base, size_t n, size_t size, size_t off,
  * it is in neither list. */
 static uint32_t find_simplex(const fl_skin_function *sk, const uint32_t key[4])
 {
-    size_t i = key_search(sk->simplex, sk->simplex_count, sizeof *sk->simplex,
+    size_t b = key[0] < sk->ball_count ? key[0] : sk->ball_count;
+    size_t lo = sk->first_stored[b];
+    size_t i = key_search(sk->simplex + lo, sk->first_stored[b + 1] - lo, sizeof *sk->simplex,
                           offsetof(skin_simplex, ball), key);
-    if (i != SIZE_MAX) return (uint32_t)i;
-    i = key_search(sk->dropped, sk->dropped_count, sizeof *sk->dropped,
+    if (i != SIZE_MAX) return (uint32_t)(lo + i);
+    lo = sk->first_dropped[b];
+    i = key_search(sk->dropped + lo, sk->first_dropped[b + 1] - lo, sizeof *sk->dropped,
                    offsetof(skin_light, ball), key);
-    if (i != SIZE_MAX) return (uint32_t)(sk->simplex_count + i);
+    if (i != SIZE_MAX) return (uint32_t)(sk->simplex_count + lo + i);
 #ifdef FL_SKIN_WALK_STATS
     { /* the missing simplices by dimension and sign: positive ball or not */
         extern _Atomic size_t skin_stat_missing[2][4];

@@ -25,6 +25,7 @@
 #include <stdio.h>
 #endif
 #include <stdatomic.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -204,6 +205,8 @@ void fl_skin_function_free(fl_skin_function *skin)
     free(skin->dropped);
     free(skin->dropped_link_start);
     free(skin->hint);
+    free(skin->first_stored);
+    free(skin->first_dropped);
     free(skin);
 }
 
@@ -1033,6 +1036,33 @@ static fl_status build_index(fl_skin_function *sk, fl_error *err)
     return FL_OK;
 }
 
+/* first[b] = the first of count records (size bytes, sorted by their ball[4] at offset off)
+ * whose smallest ball is >= b, b = 0 .. n. */
+static size_t *first_of(const void *base, size_t count, size_t size, size_t off, size_t n)
+{
+    size_t *first = fl_calloc_array(n + 2, sizeof(size_t));
+    if (!first) return NULL;
+    for (size_t i = 0; i < count; i++) {
+        uint32_t b0 = ((const uint32_t *)((const char *)base + i * size + off))[0];
+        if (b0 < n) first[b0 + 1]++;
+    }
+    for (size_t b = 0; b < n; b++)
+        first[b + 1] += first[b];
+    first[n + 1] = first[n];
+    return first;
+}
+
+static fl_status first_ranges(fl_skin_function *sk, fl_error *err)
+{
+    sk->first_stored = first_of(sk->simplex, sk->simplex_count, sizeof *sk->simplex,
+                                offsetof(skin_simplex, ball), sk->ball_count);
+    sk->first_dropped = first_of(sk->dropped, sk->dropped_count, sizeof *sk->dropped,
+                                 offsetof(skin_light, ball), sk->ball_count);
+    if (!sk->first_stored || !sk->first_dropped)
+        return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    return FL_OK;
+}
+
 static fl_status function_new(const double *xyzw, size_t n, double t, int positive_only,
                               fl_skin_function **out, fl_error *err)
 {
@@ -1095,6 +1125,8 @@ static fl_status function_new(const double *xyzw, size_t n, double t, int positi
                     (sk->dropped_link_start[sk->dropped_count] - sk->dropped_link_start[0]) *
                         sizeof(uint32_t));
 #endif
+    sk->ball_count = n;
+    if (!st && sk->walkable) st = first_ranges(sk, err);
     if (!st && !skin_clip_off) st = skin_clip_boxes(sk, SKIN_REACH_MARGIN, err);
     if (!st) st = build_index(sk, err);
     if (st) {

@@ -159,6 +159,11 @@ struct fl_skin_function {
      * any value is a correct start, so concurrent callers only lose speed). */
     int walkable;
     double *balls; /* a copy of the input (every path: the simplices' frames are read from it) */
+    size_t ball_count;
+    /* walkable only: the stored (dropped) simplices whose smallest ball is b are
+     * simplex[first_stored[b] .. first_stored[b + 1]) (dropped[first_dropped[b] ..]): the walk
+     * looks a key up in that range, not in all of them (round 14) */
+    size_t *first_stored, *first_dropped;
     size_t *link_start;
     uint32_t *link;
     /* The mesher's function only (skin_function_new_mesher): the simplices it does not store,

@@ -216,7 +216,6 @@ static void simplex_box(const double *balls, const skin_simplex *s, double lo[3]
 static double dot3(const double *u, const double *v);
 static void cross3(const double *u, const double *v, double *w);
 
-
 /* The box where the index lists s: its mixed cell's box (1-t) box(X) + t box(nu_X) cut to the
  * reach box when s->box_exact (nu_lo/nu_hi bound its power face, from the Voronoi vertices or
  * clipped, skin_clip.c), the reach box alone otherwise; empty on some axis (lo > hi) when the

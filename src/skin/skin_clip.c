@@ -109,6 +109,21 @@ typedef struct clip_poly3 {
     double (*vert)[3];
 } clip_poly3;
 
+/* u, w: an orthonormal basis of the plane orthogonal to the unit vector n. */
+static void plane_basis(const double n[3], double u[3], double w[3])
+{
+    double h[3] = {fabs(n[0]) < 0.6 ? 1 : 0, fabs(n[0]) < 0.6 ? 0 : 1, 0};
+    double hd = dotn(h, n, 3);
+    for (int c = 0; c < 3; c++)
+        u[c] = h[c] - hd * n[c];
+    double ul = sqrt(dotn(u, u, 3));
+    for (int c = 0; c < 3; c++)
+        u[c] /= ul;
+    w[0] = n[1] * u[2] - n[2] * u[1];
+    w[1] = n[2] * u[0] - n[0] * u[2];
+    w[2] = n[0] * u[1] - n[1] * u[0];
+}
+
 static double sort_key_angle(const double *x, const double *o, const double *u, const double *w)
 {
     double d[3] = {x[0] - o[0], x[1] - o[1], x[2] - o[2]};
@@ -162,18 +177,8 @@ static int clip_poly3_plane(clip_ws *w, const clip_plane *pl)
         for (int i = 0; i < ncut; i++)
             for (int c = 0; c < 3; c++)
                 o[c] += w->cut[i][c] / ncut;
-        /* u, v: an orthonormal basis of the plane */
         double nn[3] = {pl->n[0] / nl, pl->n[1] / nl, pl->n[2] / nl};
-        double h[3] = {fabs(nn[0]) < 0.6 ? 1 : 0, fabs(nn[0]) < 0.6 ? 0 : 1, 0};
-        double hd = dotn(h, nn, 3);
-        for (int c = 0; c < 3; c++)
-            u[c] = h[c] - hd * nn[c];
-        double ul = sqrt(dotn(u, u, 3));
-        for (int c = 0; c < 3; c++)
-            u[c] /= ul;
-        v[0] = nn[1] * u[2] - nn[2] * u[1];
-        v[1] = nn[2] * u[0] - nn[0] * u[2];
-        v[2] = nn[0] * u[1] - nn[1] * u[0];
+        plane_basis(nn, u, v);
         angle_item it[CLIP_MAX_VERTS];
         for (int i = 0; i < ncut; i++) {
             it[i].key = sort_key_angle(w->cut[i], o, u, v);
@@ -299,16 +304,7 @@ static int clip_nu_box(const fl_skin_function *sk, size_t id, double margin, cli
         if (s->k == 2) {
             memcpy(basis[0], n, sizeof n);
         } else { /* two unit vectors orthogonal to the edge direction n */
-            double h[3] = {fabs(n[0]) < 0.6 ? 1 : 0, fabs(n[0]) < 0.6 ? 0 : 1, 0};
-            double hd = dotn(h, n, 3);
-            for (int c = 0; c < 3; c++)
-                basis[0][c] = h[c] - hd * n[c];
-            double l = sqrt(dotn(basis[0], basis[0], 3));
-            for (int c = 0; c < 3; c++)
-                basis[0][c] /= l;
-            basis[1][0] = n[1] * basis[0][2] - n[2] * basis[0][1];
-            basis[1][1] = n[2] * basis[0][0] - n[0] * basis[0][2];
-            basis[1][2] = n[0] * basis[0][1] - n[1] * basis[0][0];
+            plane_basis(n, basis[0], basis[1]);
         }
     }
     /* the half-spaces in the parameters s: V's six faces, then the link balls' (relaxed) */

@@ -207,6 +207,7 @@ void fl_skin_function_free(fl_skin_function *skin)
     free(skin->hint);
     free(skin->first_stored);
     free(skin->first_dropped);
+    free(skin->cell_seed);
     free(skin);
 }
 
@@ -1128,6 +1129,7 @@ static fl_status function_new(const double *xyzw, size_t n, double t, int positi
     if (!st && sk->walkable) st = first_ranges(sk, err);
     if (!st && !skin_clip_off) st = skin_clip_boxes(sk, SKIN_REACH_MARGIN, err);
     if (!st) st = build_index(sk, err);
+    if (!st && sk->walkable) st = skin_seed_cells(sk, err);
     if (st) {
         fl_skin_function_free(sk);
         return st;

@@ -164,6 +164,10 @@ struct fl_skin_function {
      * simplex[first_stored[b] .. first_stored[b + 1]) (dropped[first_dropped[b] ..]): the walk
      * looks a key up in that range, not in all of them (round 14) */
     size_t *first_stored, *first_dropped;
+    /* walkable only: per index cell, the cell of the walk that located the cell's centre
+     * (UINT32_MAX for a cell without list): where the walk from the caller's start gives up it
+     * restarts here (skin_seed_cells, skin_cell.c; round 15) */
+    uint32_t *cell_seed;
     size_t *link_start;
     uint32_t *link;
     /* The mesher's function only (skin_function_new_mesher): the simplices it does not store,
@@ -218,6 +222,8 @@ extern int skin_clip_off;
  * box; skin_function.c). */
 int skin_listed_box(const fl_skin_function *sk, const skin_simplex *s, double lo[3],
                     double hi[3]);
+/* skin_seed_cells (skin_cell.c): fills sk->cell_seed (walkable functions with an index). */
+fl_status skin_seed_cells(fl_skin_function *sk, fl_error *err);
 /* end of mixed-cell point location */
 
 

@@ -218,7 +218,8 @@ static fl_status build_points(octree *o, const double *xyzw, size_t n, const fl_
 typedef struct dmarch {
     const fl_skin_function *g;
     const double *p;
-    const uint8_t *in;
+    const uint8_t *in; /* per corner: bit 0 G < 0, bit 1 start[] is its own mixed cell */
+    const uint32_t *start; /* per corner: the cell the walk ended in at it (label_and_march) */
     u64map vert; /* edge (lo index << 32 | hi index) -> vertex */
     fl_vec xyz, tri;
     size_t evaluations;
@@ -230,10 +231,16 @@ static uint32_t dedge_vertex(dmarch *m, uint32_t a, uint32_t b)
     uint64_t key = a < b ? (uint64_t)a << 32 | b : (uint64_t)b << 32 | a;
     size_t s = map_slot(&m->vert, key);
     if (m->vert.key[s] == key) return m->vert.val[s];
-    uint32_t ins = m->in[a] ? a : b, outs = m->in[a] ? b : a;
+    uint32_t ins = m->in[a] & 1 ? a : b, outs = m->in[a] & 1 ? b : a;
     double x[3];
-    skin_edge_root(m->g, m->p + 3 * (size_t)ins, m->p + 3 * (size_t)outs, SKIN_NO_CELL,
-                   SKIN_NO_CELL, &m->hint, x, &m->evaluations);
+    /* the root's walks start in the inside corner's cell, and when both corners lie in one
+     * mixed cell the root is that quadric's, without a walk (skin_edge_root). The tetrahedra
+     * come in the triangulation's order, not space's: with the previous root's cell as the
+     * start, the npm bunny's graded mesher (grade 4) restarted far for most roots (round 15) */
+    m->hint = m->start[ins];
+    skin_edge_root(m->g, m->p + 3 * (size_t)ins, m->p + 3 * (size_t)outs,
+                   m->in[ins] & 2 ? m->start[ins] : SKIN_NO_CELL,
+                   m->in[outs] & 2 ? m->start[outs] : SKIN_NO_CELL, &m->hint, x, &m->evaluations);
     uint32_t v = (uint32_t)m->xyz.count;
     if (fl_vec_push(&m->xyz, x, 1)) return UINT32_MAX;
     return map_put(&m->vert, key, v) == SIZE_MAX ? UINT32_MAX : v;
@@ -257,7 +264,7 @@ static int dmarch_tet(dmarch *m, const uint32_t *c)
 {
     int ins[4], outs[4], ni = 0, no = 0;
     for (int i = 0; i < 4; i++) {
-        if (m->in[c[i]])
+        if (m->in[c[i]] & 1)
             ins[ni++] = i;
         else
             outs[no++] = i;
@@ -346,24 +353,34 @@ static fl_status label_and_march(dmarch *m, const octree *ot, const fl_skin_opti
     fl_status st = corner_triangulation(ot, &dt, err);
     if (st != FL_OK) return st;
     uint8_t *in = fl_alloc_array(ot->pts.count, 1);
-    if (!in) {
+    uint32_t *start = fl_alloc_array(ot->pts.count, sizeof *start);
+    if (!in || !start) {
+        free(in);
+        free(start);
         fl_rt3_free(&dt);
         return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     }
+    uint32_t h = 0;
     for (size_t i = 0; i < ot->pts.count; i++) {
         if ((i & 16383) == 0 &&
             fl_progress(o->progress, o->progress_user, "skin", 0.5 * (double)i / ot->pts.count)) {
             st = fl_fail(err, FL_ERR_ALGORITHM, NULL, -1, "cancelled");
             break;
         }
-        in[i] = fl_skin_function_value(m->g, (const double *)ot->pts.data + 3 * i) < 0;
+        double v;
+        uint32_t c = skin_locate(m->g, (const double *)ot->pts.data + 3 * i, &h, &v);
+        in[i] = (uint8_t)((v < 0) | (c != SKIN_NO_CELL) << 1);
+        start[i] = h;
     }
     m->evaluations += ot->pts.count;
     m->p = ot->pts.data;
     m->in = in;
+    m->start = start;
     if (!st) st = march_delaunay(m, &dt, o, err);
     free(in);
+    free(start);
     m->in = NULL;
+    m->start = NULL;
     fl_rt3_free(&dt);
     return st;
 }

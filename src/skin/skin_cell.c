@@ -248,7 +248,14 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         if (!(h >= -tol) && !(h / el >= worst_h)) { /* most violated per unit distance */
             worst_h = h == h ? h / el : -HUGE_VAL;
             add = sk->link[l];
-        } else if (exact && add == UINT32_MAX && add_exact == UINT32_MAX) {
+        } else if ((exact || fabs(h) <= tol) && add == UINT32_MAX && add_exact == UINT32_MAX) {
+            /* inside the slack band: the slack is a distance only when h grows like |e_b|
+             * along aff nu_X. For a nearly flat coface X + b (b almost in aff X) h barely
+             * changes there, so |h| <= tol can hold far outside the cell: on the npm bunny's
+             * B* a dropped triangle accepted a point where G = -0.0037 (h = -1e-16, tol
+             * 3e-16; exact sign -1), the graded mesher labelled that corner outside and made
+             * a bubble (5 of them and a genus-2 body at grade 4; round 15). Decided exactly
+             * (h = 0 exactly: on the facet, accepted) */
             /* a face of a sliver: h's rounding is not bounded by tol there (a skinny X, the
              * link ball nearly in aff X), so every test that h does not reject is decided
              * exactly */

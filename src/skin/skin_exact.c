@@ -20,8 +20,8 @@ static void gather(const double *balls, const skin_simplex *s, uint32_t b, const
     pts[4] = x;
 }
 
-int skin_link_sign_exact(const double *balls, const skin_simplex *s, uint32_t b,
-                         const double x[3], double t)
+int skin_link_sign_exact(const double *balls, const skin_simplex *s, uint32_t b, const double x[3],
+                         double t)
 {
     const double *pts[5];
     gather(balls, s, b, x, pts);
@@ -31,8 +31,8 @@ int skin_link_sign_exact(const double *balls, const skin_simplex *s, uint32_t b,
 
 int skin_link_filter_off;
 
-int skin_link_sign_big(const double *balls, const skin_simplex *s, uint32_t b,
-                       const double x[3], double t)
+int skin_link_sign_big(const double *balls, const skin_simplex *s, uint32_t b, const double x[3],
+                       double t)
 {
     const double *pts[5];
     gather(balls, s, b, x, pts);

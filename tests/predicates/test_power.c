@@ -320,7 +320,8 @@ static void frame_config(config *C)
 {
     static const double frame[2][3][3] = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
                                           {{1, 1, 0}, {1, -1, 0}, {0, 0, 1}}};
-    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    static const int perm[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                   {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
     random_config(C, 0);
     int f = (int)(fl_test_rand_u64(&rng) % 2), q = (int)(fl_test_rand_u64(&rng) % 6);
     for (int i = 0; i < 3; i++) {
@@ -501,8 +502,8 @@ static void check_tallies(const tally *T, const char *what, int k)
     /* the families are what they say: zeros are zeros, the rest has cases */
     CHECK_MSG(T[ZERO].cases > 500 && T[ZERO].zeros == T[ZERO].cases, "%s k %d: %d zeros of %d",
               what, k, T[ZERO].zeros, T[ZERO].cases);
-    CHECK_MSG(T[NEAR].cases > 500 && T[NEAR].zeros == 0, "%s k %d: %d ulp cases, %d zeros", what,
-              k, T[NEAR].cases, T[NEAR].zeros);
+    CHECK_MSG(T[NEAR].cases > 500 && T[NEAR].zeros == 0, "%s k %d: %d ulp cases, %d zeros", what, k,
+              T[NEAR].cases, T[NEAR].zeros);
     /* a filter that never decides would pass the checks above: it must decide random inputs */
     CHECK_MSG(T[RND].filter_decided > T[RND].cases * 9 / 10, "%s k %d: filter decided %d of %d",
               what, k, T[RND].filter_decided, T[RND].cases);

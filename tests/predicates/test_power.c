@@ -114,27 +114,23 @@ static void simplex_clear(oracle_simplex *S)
         }
 }
 
-/* Projects y (relative to a) onto the direction space of S: out = sum alpha_i e_i with
- * G alpha = (e_i . y). 0 when G is singular. */
-static int project(const oracle_simplex *S, const mpq_t y[3], mpq_t out[3])
+/* out = base + sum eta_i e_i (base NULL: 0) with G eta = rhs; rhs is overwritten by eta and
+ * cleared. 0 when G is singular. */
+static int span_point(const oracle_simplex *S, mpq_t rhs[3], const mpq_t *base, mpq_t out[3])
 {
-    mpq_t A[3][3], rhs[3], t;
+    mpq_t A[3][3], t;
     mpq_init(t);
-    for (int i = 0; i < 3; i++) {
-        mpq_init(rhs[i]);
+    for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             mpq_init(A[i][j]);
             mpq_set(A[i][j], S->G[i][j]);
         }
-    }
-    for (int i = 0; i < S->k; i++)
-        for (int c = 0; c < 3; c++) {
-            mpq_mul(t, S->e[i][c], y[c]);
-            mpq_add(rhs[i], rhs[i], t);
-        }
     int ok = oracle_solve(A, rhs, S->k);
     for (int c = 0; c < 3; c++) {
-        mpq_set_ui(out[c], 0, 1);
+        if (base)
+            mpq_set(out[c], base[c]);
+        else
+            mpq_set_ui(out[c], 0, 1);
         for (int i = 0; i < S->k && ok; i++) {
             mpq_mul(t, rhs[i], S->e[i][c]);
             mpq_add(out[c], out[c], t);
@@ -149,22 +145,33 @@ static int project(const oracle_simplex *S, const mpq_t y[3], mpq_t out[3])
     return ok;
 }
 
+/* Projects y (relative to a) onto the direction space of S: out = sum alpha_i e_i with
+ * G alpha = (e_i . y). 0 when G is singular. */
+static int project(const oracle_simplex *S, const mpq_t y[3], mpq_t out[3])
+{
+    mpq_t rhs[3], t;
+    mpq_init(t);
+    for (int i = 0; i < 3; i++)
+        mpq_init(rhs[i]);
+    for (int i = 0; i < S->k; i++)
+        for (int c = 0; c < 3; c++) {
+            mpq_mul(t, S->e[i][c], y[c]);
+            mpq_add(rhs[i], rhs[i], t);
+        }
+    mpq_clear(t);
+    return span_point(S, rhs, NULL, out);
+}
+
 /* The focus of the balls z[0..k]: the point f = a + sum eta_i e_i of aff X with equal power
  * to all of them, i.e. e_i . (f - a) = s_i / 2 with s_i = |e_i|^2 - w_i + w_0 (G eta = s / 2).
  * 0 when the centres are affinely dependent. */
 static int focus(const oracle_simplex *S, const double *const *z, mpq_t f[3])
 {
-    int k = S->k;
-    mpq_t A[3][3], rhs[3], t;
+    mpq_t rhs[3], t;
     mpq_init(t);
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < 3; i++)
         mpq_init(rhs[i]);
-        for (int j = 0; j < 3; j++) {
-            mpq_init(A[i][j]);
-            mpq_set(A[i][j], S->G[i][j]);
-        }
-    }
-    for (int i = 0; i < k; i++) {
+    for (int i = 0; i < S->k; i++) {
         mpq_set(rhs[i], S->G[i][i]);
         mpq_set_d(t, z[i + 1][3]);
         mpq_sub(rhs[i], rhs[i], t);
@@ -173,21 +180,8 @@ static int focus(const oracle_simplex *S, const double *const *z, mpq_t f[3])
         mpq_set_ui(t, 1, 2);
         mpq_mul(rhs[i], rhs[i], t);
     }
-    int ok = oracle_solve(A, rhs, k);
-    for (int c = 0; c < 3; c++) {
-        mpq_set(f[c], S->a[c]);
-        for (int i = 0; i < k && ok; i++) {
-            mpq_mul(t, rhs[i], S->e[i][c]);
-            mpq_add(f[c], f[c], t);
-        }
-    }
-    for (int i = 0; i < 3; i++) {
-        mpq_clear(rhs[i]);
-        for (int j = 0; j < 3; j++)
-            mpq_clear(A[i][j]);
-    }
     mpq_clear(t);
-    return ok;
+    return span_point(S, rhs, (const mpq_t *)S->a, f);
 }
 
 /* Sign of pi_b(p) - pi_0(p), stored in val when not NULL; *consistent is cleared unless every

@@ -21,4 +21,14 @@ static inline fl_mesh skin_cube_mesh(void)
     return m;
 }
 
+/* B* of the unit cube's approximation within eps: one round, uniform grid only. */
+static inline fl_status skin_cube_bstar(double eps, fl_skin_approx *a, fl_error *err)
+{
+    fl_mesh m = skin_cube_mesh();
+    fl_skin_approx_options o = {0};
+    o.max_rounds = 1;
+    o.grade = -1;
+    return fl_skin_approx_build(&m, eps, &o, a, err);
+}
+
 #endif /* FL_TEST_SKIN_CUBE_H */

@@ -121,13 +121,9 @@ static size_t registrations(const fl_skin_function *g)
 
 static void test_cube_bstar_clip_is_conservative(void)
 {
-    fl_mesh m = skin_cube_mesh();
     fl_skin_approx a;
-    fl_skin_approx_options o = {0};
-    o.max_rounds = 1;
-    o.grade = -1;
     fl_error err;
-    CHECK_STATUS(fl_skin_approx_build(&m, 0.5, &o, &a, &err), FL_OK, &err);
+    CHECK_STATUS(skin_cube_bstar(0.5, &a, &err), FL_OK, &err);
     const double *b = a.star.xyzw;
     size_t n = a.star.count;
     fl_skin_function *g = NULL, *plain = NULL;

@@ -392,13 +392,9 @@ static void test_nearly_flat_cofaces_walk_equals_scan(void)
  * list have none. On the test cube's B* (eps 0.5) 1222 of 1328 seeds hold their centre. */
 static void test_seeds_hold_cell_centres(void)
 {
-    fl_mesh m = skin_cube_mesh();
     fl_skin_approx a;
-    fl_skin_approx_options o = {0};
-    o.max_rounds = 1;
-    o.grade = -1;
     fl_error err;
-    CHECK_STATUS(fl_skin_approx_build(&m, 0.5, &o, &a, &err), FL_OK, &err);
+    CHECK_STATUS(skin_cube_bstar(0.5, &a, &err), FL_OK, &err);
     fl_skin_function *g = NULL;
     CHECK_STATUS(skin_function_new_mesher(a.star.xyzw, a.star.count, 0.5, &g, &err), FL_OK, &err);
     if (!g) return;

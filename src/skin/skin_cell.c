@@ -249,16 +249,14 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
             worst_h = h == h ? h / el : -HUGE_VAL;
             add = sk->link[l];
         } else if ((exact || fabs(h) <= tol) && add == UINT32_MAX && add_exact == UINT32_MAX) {
-            /* inside the slack band: the slack is a distance only when h grows like |e_b|
-             * along aff nu_X. For a nearly flat coface X + b (b almost in aff X) h barely
-             * changes there, so |h| <= tol can hold far outside the cell: on the npm bunny's
-             * B* a dropped triangle accepted a point where G = -0.0037 (h = -1e-16, tol
-             * 3e-16; exact sign -1), the graded mesher labelled that corner outside and made
-             * a bubble (5 of them and a genus-2 body at grade 4; round 15). Decided exactly
-             * (h = 0 exactly: on the facet, accepted) */
-            /* a face of a sliver: h's rounding is not bounded by tol there (a skinny X, the
-             * link ball nearly in aff X), so every test that h does not reject is decided
-             * exactly */
+            /* Decided exactly (0: on the facet, accepted): every test h does not reject on a
+             * face of a sliver, where h's rounding is not bounded by tol (a skinny X, the link
+             * ball nearly in aff X), and every test inside the slack band elsewhere: the slack
+             * is a distance only when h grows like |e_b| along aff nu_X, and for a nearly flat,
+             * nearly cospherical coface X + b it barely changes there, so |h| <= tol held far
+             * outside the cell. On the npm bunny's B* a dropped triangle accepted a point where
+             * G = -0.0037 (h = -1e-16, tol 3e-16, exact sign -1); the graded mesher labelled
+             * that corner outside and made a bubble (round 15). */
             int sg = skin_link_sign_exact(sk->balls, s, sk->link[l], x, t);
             if (sg == 2) {
                 *why = WHY_SHAKY | s->shaky;
@@ -391,12 +389,8 @@ fl_status skin_seed_cells(fl_skin_function *sk, fl_error *err)
         sk->cell_seed[id] = UINT32_MAX;
         if (sk->cell_start[id] == sk->cell_start[id + 1]) continue;
         uint32_t first = sk->cell_item[sk->cell_start[id]], cur = prev;
-        size_t ix = id % sk->dims[0], iy = id / sk->dims[0] % sk->dims[1],
-               iz = id / sk->dims[0] / sk->dims[1];
-        double x[3] = {sk->origin[0] + ((double)ix + 0.5) * sk->cell,
-                       sk->origin[1] + ((double)iy + 0.5) * sk->cell,
-                       sk->origin[2] + ((double)iz + 0.5) * sk->cell};
-        double val;
+        double x[3], val;
+        skin_index_centre(sk, id, x);
         int why;
         int ok = cur != UINT32_MAX && walk(sk, x, &cur, SKIN_WALK_FAR, &val, &why);
         if (!ok) {
@@ -518,8 +512,10 @@ uint32_t skin_locate_why(const fl_skin_function *sk, const double x[3], uint32_t
     if (walk(sk, x, &cur, SKIN_WALK_NEAR, val, why)) return found(sk, cur, start, why);
     /* a far start: restart next to x from the index (or go on walking outside it) */
     size_t cell = 0;
-    int kind = !skin_index_cell(sk, x, &cell) ? 0 : sk->cell_start[cell] == sk->cell_start[cell + 1] ? 1 : 2;
-    if (kind == 2) cur = sk->cell_seed ? sk->cell_seed[cell] : sk->cell_item[sk->cell_start[cell]];
+    int kind = !skin_index_cell(sk, x, &cell)                          ? 0 /* outside */
+               : sk->cell_start[cell] == sk->cell_start[cell + 1] ? 1 /* no list */
+                                                                  : 2;
+    if (kind == 2) cur = sk->cell_seed[cell];
     int far = walk(sk, x, &cur, SKIN_WALK_FAR, val, why);
 #ifdef FL_SKIN_WALK_STATS
     stat_restart[kind][far]++;

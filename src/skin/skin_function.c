@@ -862,6 +862,12 @@ static void cell_centre(const fl_skin_function *sk, size_t x, size_t y, size_t z
     c[2] = sk->origin[2] + ((double)z + 0.5) * sk->cell;
 }
 
+void skin_index_centre(const fl_skin_function *skin, size_t id, double c[3])
+{
+    cell_centre(skin, id % skin->dims[0], id / skin->dims[0] % skin->dims[1],
+                id / skin->dims[0] / skin->dims[1], c);
+}
+
 /* Whether the index lists s at all, with its registration box (reg_box): simplices without a
  * positive ball are never the minimiser of a negative G, and a mixed cell beyond the reach of
  * its simplex only holds G >= 0. */

@@ -190,6 +190,8 @@ struct fl_skin_function {
 double skin_value_walk(const fl_skin_function *skin, const double x[3], uint32_t *start);
 double skin_value_scan(const fl_skin_function *skin, const double x[3]);
 int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell);
+/* skin_index_centre: the centre of index cell id (numbered x fastest, then y, then z). */
+void skin_index_centre(const fl_skin_function *skin, size_t id, double c[3]);
 /* skin_function_new_mesher: fl_skin_function_new keeping only the simplices with a positive
  * ball. The others (every ball of weight <= 0) have G >= 0 on their whole mixed cell
  * (G = |x - z|^2 - t w(z) there, w(z) <= max w over X <= 0), are never in the index and never

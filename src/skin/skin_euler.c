@@ -42,8 +42,6 @@
 #include "predicates/power.h"
 #include "skin/skin_internal.h"
 
-enum { LINK_TEST = FL_BORDERED_LINK, POWER_TEST = FL_BORDERED_POWER };
-
 /* One record type for both roles, so a level's entries can be compacted in place into the next
  * level: as an entry, v = a k-simplex X (sorted ball indices, UINT32_MAX padded), opp the ball
  * of one of its cofaces Y = X + opp and in = 1 when Y is in K; as a simplex of a level, v and
@@ -59,14 +57,14 @@ static int cmp_rec(const void *pa, const void *pb)
     return skin_key_cmp(((const simplex_rec *)pa)->v, ((const simplex_rec *)pb)->v);
 }
 
-/* Sign of the bordered determinant of simplex x[0..k] (mode LINK_TEST with ball b, or
- * POWER_TEST; power.h): the filter, else the exact stage (2: out of memory). */
+/* Sign of the bordered determinant of simplex x[0..k] (mode FL_BORDERED_LINK with ball b, or
+ * FL_BORDERED_POWER; power.h): the filter, else the exact stage (2: out of memory). */
 static int bordered_sign(const double *balls, const uint32_t *x, int k, int mode, uint32_t b)
 {
     const double *z[5];
     for (int i = 0; i <= k; i++)
         z[i] = balls + 4 * (size_t)x[i];
-    if (mode == LINK_TEST) z[k + 1] = balls + 4 * (size_t)b;
+    if (mode == FL_BORDERED_LINK) z[k + 1] = balls + 4 * (size_t)b;
     return fl_power_bordered_sign(z, k, mode);
 }
 
@@ -79,11 +77,11 @@ static int decide(const double *balls, const simplex_rec *group, size_t count, i
     for (size_t i = 0; i < count; i++)
         if (group[i].in) return 1; /* nu_Y lies in nu_X, where pi_X = pi_Y < 0 */
     for (size_t i = 0; i < count; i++) {
-        int s = bordered_sign(balls, group[0].v, k, LINK_TEST, group[i].opp);
+        int s = bordered_sign(balls, group[0].v, k, FL_BORDERED_LINK, group[i].opp);
         if (s == 2) return -1;
         if (s < 0) return 0; /* f beyond the facet of the coface: the minimum is on the boundary */
     }
-    int s = bordered_sign(balls, group[0].v, k, POWER_TEST, 0);
+    int s = bordered_sign(balls, group[0].v, k, FL_BORDERED_POWER, 0);
     if (s == 2) return -1;
     return s > 0; /* det sign is the opposite of pi_X(f)'s: X in K iff pi_X(f) < 0 */
 }
@@ -110,7 +108,7 @@ static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *ch
     for (size_t t = 0; t < count; t++) {
         memcpy(level[t].v, rt->tet + 4 * t, 4 * sizeof(uint32_t));
         sort4(level[t].v);
-        int s = bordered_sign(balls, level[t].v, 3, POWER_TEST, 0);
+        int s = bordered_sign(balls, level[t].v, 3, FL_BORDERED_POWER, 0);
         if (s == 2) goto nomem;
         level[t].in = s > 0;
         sum -= level[t].in;

@@ -1818,6 +1818,15 @@ fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt,
  * FL_ERR_NOMEM. */
 fl_status fl_balls_union_euler(const double *xyzw, size_t n, long long *chi, fl_error *err);
 
+/* The Betti numbers of the union of the open balls xyzw[4n] (as fl_balls_union_euler): betti[0]
+ * its connected components, betti[1] its independent tunnels (the total genus of its boundary),
+ * betti[2] its cavities (bounded components of the complement), so that chi = b0 - b1 + b2.
+ * A mesh of skin^t(B) has the skin's topology only if it has b0 + b2 components of total genus
+ * b1. b0 and b2 come from the same dual complex by union-find over its edges and over the
+ * triangles outside it (docs/skin.md, "The topology check"); b1 from chi. Same errors as
+ * fl_balls_union_euler; on failure betti is zeroed. */
+fl_status fl_balls_union_betti(const double *xyzw, size_t n, long long betti[3], fl_error *err);
+
 /* What fl_skin_mesh_checked decided. */
 typedef struct fl_skin_check {
     long long euler;          /* Euler characteristic of the mesh returned (V - F/2: the mesh

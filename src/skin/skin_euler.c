@@ -96,13 +96,86 @@ static void sort4(uint32_t *v)
         }
 }
 
+/* ---- Betti numbers: union-find over vertices (b0) and over the complement (b2) ---- */
+
+static uint32_t uf_find(uint32_t *parent, uint32_t a)
+{
+    while (parent[a] != a) {
+        parent[a] = parent[parent[a]];
+        a = parent[a];
+    }
+    return a;
+}
+
+static void uf_union(uint32_t *parent, uint32_t a, uint32_t b)
+{
+    a = uf_find(parent, a);
+    b = uf_find(parent, b);
+    if (a != b) parent[a < b ? b : a] = a < b ? a : b;
+}
+
+static uint32_t *uf_new(size_t n)
+{
+    uint32_t *parent = fl_alloc_array(n ? n : 1, sizeof *parent);
+    if (parent)
+        for (size_t i = 0; i < n; i++)
+            parent[i] = (uint32_t)i;
+    return parent;
+}
+
+/* b2 = the bounded components of R^3 minus |K|. The complement is the union of the open
+ * simplices not in K and the outside of the hull; every simplex not in K has only cofaces not
+ * in K, so its points reach the tetrahedra (or the outside) around it without meeting K, and two
+ * tetrahedra not in K are in one component iff a path of triangles not in K joins them. So the
+ * components are those of the graph on the tetrahedra not in K plus one node for the outside,
+ * with an arc per triangle not in K (a hull triangle joins its tetrahedron to the outside).
+ * tri[0..tri_count) are the sorted triangles with their `in` flags, tet_in the tetrahedra's.
+ * -1 when out of memory. */
+static long long complement_cavities(const fl_rt3 *rt, const unsigned char *tet_in,
+                                     const simplex_rec *tri, size_t tri_count)
+{
+    size_t count = rt->tet_count;
+    uint32_t *parent = uf_new(count + 1); /* node `count` is the outside */
+    if (!parent) return -1;
+    for (size_t t = 0; t < count; t++) {
+        if (tet_in[t]) continue;
+        for (int i = 0; i < 4; i++) {
+            uint32_t u = rt->adj[4 * t + i];
+            if (u != UINT32_MAX && u < t) continue; /* each inner triangle once */
+            simplex_rec key;
+            int j = 0;
+            for (int c = 0; c < 4; c++)
+                if (c != i) key.v[j++] = rt->tet[4 * t + c];
+            key.v[3] = UINT32_MAX;
+            sort4(key.v);
+            const simplex_rec *f = bsearch(&key, tri, tri_count, sizeof *tri, cmp_rec);
+            if (f && !f->in) uf_union(parent, (uint32_t)t, u == UINT32_MAX ? (uint32_t)count : u);
+        }
+    }
+    long long roots = 0;
+    for (size_t t = 0; t <= count; t++)
+        roots += (t == count || !tet_in[t]) && uf_find(parent, (uint32_t)t) == t;
+    free(parent);
+    return roots - 1;
+}
+
 /* chi(K) from the tetrahedra of rt over `balls` (auxiliary balls included: they are decided
- * like the others and never come out in K). */
-static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *chi, fl_error *err)
+ * like the others and never come out in K), and with betti non-NULL also b0 and b2 of K into
+ * betti[0] and betti[2] (b1 is then b0 + b2 - chi). */
+static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *chi,
+                            long long *betti, fl_error *err)
 {
     size_t count = rt->tet_count;
     simplex_rec *level = fl_alloc_array(count ? count : 1, sizeof *level);
     if (!level) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "balls union euler: out of memory");
+    unsigned char *tet_in = NULL;
+    uint32_t *vertex_parent = NULL;
+    if (betti) {
+        tet_in = fl_alloc_array(count ? count : 1, 1);
+        size_t balls_count = rt->point_count;
+        vertex_parent = uf_new(balls_count);
+        if (!tet_in || !vertex_parent) goto nomem;
+    }
     long long sum = 0;
     /* tetrahedra: nu_X is the point f itself */
     for (size_t t = 0; t < count; t++) {
@@ -112,6 +185,7 @@ static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *ch
         if (s == 2) goto nomem;
         level[t].in = s > 0;
         sum -= level[t].in;
+        if (tet_in) tet_in[t] = (unsigned char)level[t].in;
     }
     for (int k = 2; k >= 0; k--) {
         /* every (k+1)-simplex Y gives each of its k + 2 facets X the entry (X, Y \ X, Y in K) */
@@ -141,17 +215,33 @@ static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *ch
                 j++;
             int in = decide(balls, e + i, j - i, k);
             if (in < 0) goto nomem;
+            if (vertex_parent && k == 0) /* the entries of vertex X: its edges X + opp */
+                for (size_t g = i; g < j; g++)
+                    if (e[g].in) uf_union(vertex_parent, e[g].v[0], e[g].opp);
             memmove(e[count].v, e[i].v, sizeof e[count].v);
             e[count++].in = in;
             if (in) sum += k % 2 ? -1 : 1;
             i = j;
         }
+        if (betti && k == 2) {
+            betti[2] = complement_cavities(rt, tet_in, e, count);
+            if (betti[2] < 0) goto nomem;
+        }
+    }
+    if (betti) {
+        betti[0] = 0;
+        for (size_t i = 0; i < count; i++) /* level: the vertices with their flags */
+            betti[0] += level[i].in && uf_find(vertex_parent, level[i].v[0]) == level[i].v[0];
     }
     free(level);
+    free(tet_in);
+    free(vertex_parent);
     *chi = sum;
     return FL_OK;
 nomem:
     free(level);
+    free(tet_in);
+    free(vertex_parent);
     return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "balls union euler: out of memory");
 }
 
@@ -196,12 +286,11 @@ static double *with_auxiliary(const double *xyzw, size_t n, int *too_big)
     return all;
 }
 
-fl_status fl_balls_union_euler(const double *xyzw, size_t n, long long *chi, fl_error *err)
+/* chi of the union into *chi, and with betti non-NULL its Betti numbers too (the entry points'
+ * checks and zeroing done). */
+static fl_status union_topology(const double *xyzw, size_t n, long long *chi, long long *betti,
+                                fl_error *err)
 {
-    fl_error_clear(err);
-    if (!chi || (n && !xyzw))
-        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "balls union euler: NULL argument");
-    *chi = 0;
     for (size_t i = 0; i < 4 * n; i++)
         if (!isfinite(xyzw[i]) || fabs(xyzw[i]) > 1e100)
             return fl_fail(err, FL_ERR_INPUT, NULL, -1,
@@ -217,7 +306,7 @@ fl_status fl_balls_union_euler(const double *xyzw, size_t n, long long *chi, fl_
     fl_error rt_err;
     fl_status st = fl_rt3_build(xyzw, n, NULL, &rt, &rt_err);
     if (st == FL_OK) {
-        st = dual_euler(xyzw, &rt, chi, err);
+        st = dual_euler(xyzw, &rt, chi, betti, err);
         fl_rt3_free(&rt);
         return st;
     }
@@ -235,11 +324,36 @@ fl_status fl_balls_union_euler(const double *xyzw, size_t n, long long *chi, fl_
                        : fl_fail(err, FL_ERR_NOMEM, NULL, -1, "balls union euler: out of memory");
     st = fl_rt3_build(all, n + 4, NULL, &rt, &rt_err);
     if (st == FL_OK) {
-        st = dual_euler(all, &rt, chi, err);
+        st = dual_euler(all, &rt, chi, betti, err);
         fl_rt3_free(&rt);
     } else if (err) {
         *err = rt_err;
     }
     free(all);
     return st;
+}
+
+fl_status fl_balls_union_euler(const double *xyzw, size_t n, long long *chi, fl_error *err)
+{
+    fl_error_clear(err);
+    if (!chi || (n && !xyzw))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "balls union euler: NULL argument");
+    *chi = 0;
+    return union_topology(xyzw, n, chi, NULL, err);
+}
+
+fl_status fl_balls_union_betti(const double *xyzw, size_t n, long long betti[3], fl_error *err)
+{
+    fl_error_clear(err);
+    if (!betti || (n && !xyzw))
+        return fl_fail(err, FL_ERR_USAGE, NULL, -1, "balls union betti: NULL argument");
+    betti[0] = betti[1] = betti[2] = 0;
+    long long chi = 0;
+    fl_status st = union_topology(xyzw, n, &chi, betti, err);
+    if (st != FL_OK) {
+        betti[0] = betti[1] = betti[2] = 0;
+        return st;
+    }
+    betti[1] = betti[0] + betti[2] - chi;
+    return FL_OK;
 }

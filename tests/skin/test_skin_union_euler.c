@@ -270,6 +270,223 @@ static void test_bad_input_is_rejected(void)
     }
 }
 
+/* ---- fl_balls_union_betti ---- */
+
+static void union_betti(const double *b, size_t n, long long *be)
+{
+    fl_error err;
+    be[0] = be[1] = be[2] = -12345;
+    CHECK_STATUS(fl_balls_union_betti(b, n, be, &err), FL_OK, &err);
+    CHECK_MSG(be[0] - be[1] + be[2] == union_euler(b, n), "betti %lld %lld %lld, chi %lld",
+              be[0], be[1], be[2], union_euler(b, n));
+}
+
+static int find_root(int *parent, int a)
+{
+    while (parent[a] != a)
+        a = parent[a] = parent[parent[a]];
+    return a;
+}
+
+/* Components of the union by brute force: two open balls meet iff |c_i - c_j| < r_i + r_j. */
+static long long overlap_components(const double *b, int n)
+{
+    int *parent = malloc((size_t)n * sizeof *parent);
+    CHECK(parent != NULL);
+    for (int i = 0; i < n; i++)
+        parent[i] = i;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < i; j++) {
+            if (b[4 * i + 3] <= 0 || b[4 * j + 3] <= 0) continue;
+            double d2 = 0;
+            for (int c = 0; c < 3; c++)
+                d2 += (b[4 * i + c] - b[4 * j + c]) * (b[4 * i + c] - b[4 * j + c]);
+            double r = sqrt(b[4 * i + 3]) + sqrt(b[4 * j + 3]);
+            if (d2 < r * r) parent[find_root(parent, i)] = find_root(parent, j);
+        }
+    long long count = 0;
+    for (int i = 0; i < n; i++)
+        count += b[4 * i + 3] > 0 && find_root(parent, i) == i;
+    free(parent);
+    return count;
+}
+
+/* b0 against the balls' overlap graph on the random sets of the Euler test (several
+ * components each), and b1 = b0 + b2 - chi by construction (union_betti checks the sum). */
+static void test_union_betti_components_match_the_overlap_graph(void)
+{
+    double *b = malloc(4 * 130 * sizeof *b);
+    CHECK(b != NULL);
+    int several = 0;
+    for (int rep = 0; rep < 12; rep++) {
+        int n = 20 + 10 * rep;
+        random_balls(b, n, 2.5 * cbrt((double)n), 0.3 + 0.05 * rep, 0.8, rep % 3 ? 0.2 : 0);
+        long long be[3];
+        union_betti(b, (size_t)n, be);
+        long long want = overlap_components(b, n);
+        CHECK_MSG(be[0] == want, "n %d: b0 %lld, overlap graph %lld", n, be[0], want);
+        CHECK(be[1] >= 0 && be[2] >= 0);
+        several += want > 1;
+    }
+    CHECK(several > 6);
+    free(b);
+}
+
+/* Balls of radius 0.75 on a random subset of the m^3 integer lattice (every lattice point
+ * present with probability p): the most degenerate input (every unit cube's corners are
+ * cospherical). The gaps are found cube by cube: a unit cube's centre is 0.866 from its
+ * corners, so it is never covered, and the uncovered points of a cube all reach its centre; a
+ * face is fully covered iff its 4 corners are present (its centre is 0.707 from them, any
+ * point of it at most that from the nearest corner); so the complement's components are those
+ * of the graph on the unit cubes of [-1, m]^3 joined across faces with a missing corner, and
+ * the cubes outside the lattice reach infinity. b2 is the number of the other components;
+ * b0 comes from the overlap graph (neighbours at 1 and sqrt 2 overlap, at sqrt 3 not). */
+static long long lattice_cavities(const unsigned char *present, int m)
+{
+    int side = m + 1; /* cubes with lower corner in [-1, m - 1]^3 */
+    int cubes = side * side * side;
+    int *parent = malloc((size_t)cubes * sizeof *parent);
+    CHECK(parent != NULL);
+    for (int i = 0; i < cubes; i++)
+        parent[i] = i;
+#define LATTICE_AT(x, y, z)                                                                        \
+    ((x) >= 0 && (y) >= 0 && (z) >= 0 && (x) < m && (y) < m && (z) < m &&                          \
+     present[((x) * m + (y)) * m + (z)])
+    for (int x = -1; x < m; x++)
+        for (int y = -1; y < m; y++)
+            for (int z = -1; z < m; z++) {
+                int id = ((x + 1) * side + (y + 1)) * side + (z + 1);
+                int on_border = x < 0 || y < 0 || z < 0 || x == m - 1 || y == m - 1 || z == m - 1;
+                if (on_border) parent[find_root(parent, id)] = find_root(parent, 0);
+                for (int axis = 0; axis < 3; axis++) {
+                    int nx = x + (axis == 0), ny = y + (axis == 1), nz = z + (axis == 2);
+                    if (nx >= m || ny >= m || nz >= m) continue;
+                    /* the face shared with the next cube along axis: corners at coordinate
+                     * x+1 (resp. y+1, z+1) on that axis */
+                    int full = 1;
+                    for (int k = 0; k < 4; k++) {
+                        int c[3] = {x, y, z}, o = 0;
+                        for (int a = 0; a < 3; a++) {
+                            if (a == axis) c[a] += 1;
+                            else c[a] += (k >> o++) & 1;
+                        }
+                        full &= LATTICE_AT(c[0], c[1], c[2]);
+                    }
+                    int nid = ((nx + 1) * side + (ny + 1)) * side + (nz + 1);
+                    if (!full) parent[find_root(parent, id)] = find_root(parent, nid);
+                }
+            }
+#undef LATTICE_AT
+    long long count = 0;
+    int outside = find_root(parent, 0);
+    for (int i = 0; i < cubes; i++)
+        count += find_root(parent, i) == i && i != outside;
+    free(parent);
+    return count;
+}
+
+static void test_union_betti_of_lattice_subsets_matches_the_cube_graph(void)
+{
+    enum { M = 5 };
+    double b[4 * M * M * M];
+    unsigned char present[M * M * M];
+    static const double keep[] = {1, 0.97, 0.93, 0.9, 0.85, 0.8, 0.7, 0.6};
+    int cavities = 0, tunnels = 0;
+    for (int rep = 0; rep < 16; rep++) {
+        int n = 0;
+        for (int i = 0; i < M * M * M; i++) {
+            present[i] = rnd() < keep[rep % 8];
+            if (!present[i]) continue;
+            b[4 * n + 0] = i / (M * M);
+            b[4 * n + 1] = i / M % M;
+            b[4 * n + 2] = i % M;
+            b[4 * n + 3] = 0.5625;
+            n++;
+        }
+        long long be[3];
+        union_betti(b, (size_t)n, be);
+        long long want2 = lattice_cavities(present, M), want0 = overlap_components(b, n);
+        CHECK_MSG(be[0] == want0 && be[2] == want2, "rep %d (%d balls): b0 %lld b2 %lld, "
+                  "expected %lld and %lld", rep, n, be[0], be[2], want0, want2);
+        CHECK(be[1] >= 0);
+        cavities += be[2] > 0;
+        tunnels += be[1] > 0;
+    }
+    CHECK(cavities > 4 && tunnels > 4);
+}
+
+/* Shapes whose Betti numbers are elementary. */
+static void test_union_betti_of_elementary_shapes(void)
+{
+    long long be[3];
+    /* the cube corners of the Euler test: 8 balls; the 12-edge frame (b1 = 12 - 8 + 1); the
+     * hollow shell (also when only the centre point is missed); the solid cube */
+    const double w[] = {1, 1.5, 2, 2.5, 3, 3.5};
+    static const long long want[6][3] = {{8, 0, 0}, {1, 5, 0}, {1, 5, 0},
+                                         {1, 0, 1}, {1, 0, 1}, {1, 0, 0}};
+    for (int k = 0; k < 6; k++) {
+        double b[32];
+        for (int i = 0; i < 8; i++) {
+            b[4 * i + 0] = i & 1 ? 1 : -1;
+            b[4 * i + 1] = i & 2 ? 1 : -1;
+            b[4 * i + 2] = i & 4 ? 1 : -1;
+            b[4 * i + 3] = w[k];
+        }
+        union_betti(b, 8, be);
+        CHECK_MSG(be[0] == want[k][0] && be[1] == want[k][1] && be[2] == want[k][2],
+                  "w %g: betti %lld %lld %lld", w[k], be[0], be[1], be[2]);
+    }
+    /* a ring of 16 balls of radius 0.5 on a circle of radius 2 (spacing 0.78, tilted out of
+     * every coordinate plane): a solid torus; two such rings far apart: 2 components, 2
+     * tunnels */
+    double ring[4 * 32];
+    for (int i = 0; i < 32; i++) {
+        double a = 2 * 3.14159265358979323846 * (i % 16) / 16, off = i < 16 ? 0 : 10;
+        ring[4 * i + 0] = 2 * cos(a) + off;
+        ring[4 * i + 1] = 2 * sin(a) * 0.8;
+        ring[4 * i + 2] = 2 * sin(a) * 0.6 + 0.1 * cos(a);
+        ring[4 * i + 3] = 0.25;
+    }
+    union_betti(ring, 16, be);
+    CHECK(be[0] == 1 && be[1] == 1 && be[2] == 0);
+    union_betti(ring, 32, be);
+    CHECK(be[0] == 2 && be[1] == 2 && be[2] == 0);
+    /* the full 3^3 lattice with radius 0.6 (edges overlap, face diagonals 1.41 > 1.2 do not):
+     * the jungle gym of 54 edges on 27 nodes, b1 = 54 - 27 + 1; radius 0.75 closes its faces
+     * and leaves the 8 unit cubes' centres as cavities */
+    double lat[4 * 27];
+    for (int i = 0; i < 27; i++) {
+        lat[4 * i + 0] = i / 9;
+        lat[4 * i + 1] = i / 3 % 3;
+        lat[4 * i + 2] = i % 3;
+        lat[4 * i + 3] = 0.36;
+    }
+    union_betti(lat, 27, be);
+    CHECK_MSG(be[0] == 1 && be[1] == 28 && be[2] == 0, "betti %lld %lld %lld", be[0], be[1],
+              be[2]);
+    for (int i = 0; i < 27; i++)
+        lat[4 * i + 3] = 0.5625;
+    union_betti(lat, 27, be);
+    CHECK_MSG(be[0] == 1 && be[1] == 0 && be[2] == 8, "betti %lld %lld %lld", be[0], be[1],
+              be[2]);
+    /* nothing, one ball, two apart, coplanar ring (the auxiliary-ball path) */
+    union_betti(NULL, 0, be);
+    CHECK(be[0] == 0 && be[1] == 0 && be[2] == 0);
+    double two[8] = {0, 0, 0, 1, 2, 0, 0, 1};
+    union_betti(two, 2, be);
+    CHECK(be[0] == 2 && be[1] == 0 && be[2] == 0);
+    double sq[16] = {0, 0, 0, 1.21, 2, 0, 0, 1.21, 2, 2, 0, 1.21, 0, 2, 0, 1.21};
+    union_betti(sq, 4, be);
+    CHECK(be[0] == 1 && be[1] == 1 && be[2] == 0);
+    /* bad input: as fl_balls_union_euler, and the numbers are zeroed */
+    fl_error err;
+    double bad[8] = {0, 0, 0, 1, 1, 0, 0, NAN};
+    CHECK_STATUS(fl_balls_union_betti(bad, 2, be, &err), FL_ERR_INPUT, &err);
+    CHECK(be[0] == 0 && be[1] == 0 && be[2] == 0);
+    CHECK_STATUS(fl_balls_union_betti(bad, 2, NULL, &err), FL_ERR_USAGE, &err);
+    CHECK_STATUS(fl_balls_union_betti(NULL, 2, be, &err), FL_ERR_USAGE, &err);
+}
+
 int main(void)
 {
     static const fl_test_case cases[] = {
@@ -279,6 +496,9 @@ int main(void)
         FL_TEST_CASE(test_nested_balls_and_a_hollow_shell),
         FL_TEST_CASE(test_few_coplanar_collinear_and_duplicate_balls),
         FL_TEST_CASE(test_bad_input_is_rejected),
+        FL_TEST_CASE(test_union_betti_components_match_the_overlap_graph),
+        FL_TEST_CASE(test_union_betti_of_lattice_subsets_matches_the_cube_graph),
+        FL_TEST_CASE(test_union_betti_of_elementary_shapes),
     };
     return fl_test_run(cases, sizeof cases / sizeof cases[0]);
 }

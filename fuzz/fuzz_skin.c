@@ -1,12 +1,13 @@
-/* Fuzzes the skin surface module on up to 6 decoded balls (grid centres, weights mostly small
+/* Fuzzes the skin surface module on up to 3 decoded balls (grid centres, weights mostly small
  * positive, sometimes zero, negative, NaN or huge) and a shrink factor t: fl_skin_function_new +
- * fl_skin_function_value, fl_balls_union_euler (chi of the union in [0, positive balls], their
- * count when no two meet), then fl_skin_mesh with a small cube budget. Invariants: NaN/Inf, a
- * value beyond 1e100 or no positive weight gives FL_ERR_INPUT, t outside (0, 1) FL_ERR_USAGE;
- * G < 0 at the centre of every ball of positive weight (the centre is inside b^t, so inside the
- * body), G > 0 far outside every ball; on success the mesh is closed, manifold and oriented (fl_mesh_check), outward (positive
- * volume), with finite vertices inside the balls' bounding box, and the measured vertex offset
- * within a grid cell. */
+ * fl_skin_function_value, fl_balls_union_euler and _betti (chi of the union in [0, positive
+ * balls], their count when no two meet; the Betti numbers sum to chi), then fl_skin_mesh with a
+ * small cube budget. Invariants: NaN/Inf, a value beyond 1e100 or no positive weight gives
+ * FL_ERR_INPUT, t outside (0, 1) FL_ERR_USAGE; G < 0 at the centre of every ball of positive
+ * weight (the centre is inside b^t, so inside the body), G > 0 far outside every ball; on
+ * success the mesh is closed, manifold and oriented (fl_mesh_check), outward (positive volume),
+ * with finite vertices inside the balls' bounding box, and the measured vertex offset within a
+ * grid cell. */
 #include "fuzz_common.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -63,6 +64,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         }
         FZ_ASSERT(chi >= 0 && chi <= count, "union Euler %lld of %lld balls", chi, count);
         FZ_ASSERT(!apart || chi == count, "union Euler %lld of %lld separate balls", chi, count);
+        /* fl_balls_union_betti: the same chi, b0 in [min(count, 1), count], no void (3 balls) */
+        long long betti[3] = {-1, -1, -1};
+        fl_status bst = fl_balls_union_betti(xyzw, n, betti, &err);
+        FZ_ASSERT(bst == FL_OK, "union Betti failed (%d): %s", (int)bst, err.message);
+        FZ_ASSERT(betti[0] - betti[1] + betti[2] == chi && betti[1] >= 0 && betti[2] == 0 &&
+                      betti[0] <= count && betti[0] >= (count > 0),
+                  "union Betti %lld %lld %lld, chi %lld, %lld balls", betti[0], betti[1],
+                  betti[2], chi, count);
+        FZ_ASSERT(!apart || betti[0] == count, "union b0 %lld of %lld separate balls", betti[0],
+                  count);
     }
     fl_skin_function *g = NULL;
     fl_status st = fl_skin_function_new(xyzw, n, t, &g, &err);

@@ -1831,20 +1831,25 @@ fl_status fl_balls_union_betti(const double *xyzw, size_t n, long long betti[3],
 typedef struct fl_skin_check {
     long long euler;          /* Euler characteristic of the mesh returned (V - F/2: the mesh
                                  is a closed 2-manifold) */
-    long long euler_expected; /* 2 chi(union of the balls), fl_balls_union_euler */
-    int topology_ok;          /* 1 when euler == euler_expected */
+    long long euler_expected; /* 2 chi(union of the balls), fl_balls_union_betti */
+    long long components;     /* connected components of the mesh returned */
+    long long components_expected; /* b0 + b2 of the union (fl_balls_union_betti): one
+                                      boundary per component and one per cavity */
+    int topology_ok;          /* 1 when euler == euler_expected and components ==
+                                 components_expected */
     int attempts;             /* meshes built, 1 to 3 */
     double grade;             /* grade of the grid of the mesh returned; 0 the uniform grid */
 } fl_skin_check;
 
 /* fl_skin_mesh with a topology check. With opt NULL or opt->cell and opt->grade both 0 (the
  * default), meshes on the graded grid of grade 1.5, and when the mesh's Euler characteristic
- * is not 2 chi(union of the balls) retries at grade 0.75, then on the uniform grid of the
+ * is not 2 chi(union of the balls) or its number of components not b0 + b2 of the union
+ * (fl_balls_union_betti) retries at grade 0.75, then on the uniform grid of the
  * default cell, keeping the first mesh that matches, else the last (finest) one with
  * check->topology_ok = 0. A graded attempt refused for its size (FL_ERR_INPUT) moves on to the
  * next. With cell or grade given, meshes once as asked and reports the check. check may be
  * NULL; stats are those of the mesh returned. Errors as fl_skin_mesh and
- * fl_balls_union_euler. On failure *out is zeroed. Free with fl_mesh_free. */
+ * fl_balls_union_betti. On failure *out is zeroed. Free with fl_mesh_free. */
 fl_status fl_skin_mesh_checked(const double *xyzw, size_t n, const fl_skin_options *opt,
                                fl_mesh *out, fl_skin_stats *stats, fl_skin_check *check,
                                fl_error *err);

@@ -48,7 +48,8 @@ static const char *usage_text =
     "               is wrong\n"
     "  -o FILE      the mesh (.off .obj .ply .stl)\n"
     "  --json       --balls: balls, vertices, faces, euler, genus, closed, manifold, cell,\n"
-    "               max_vertex_offset, euler_expected, topology_ok, grade (0: uniform),\n"
+    "               max_vertex_offset, euler_expected, components, components_expected,\n"
+    "               topology_ok, grade (0: uniform),\n"
     "               attempts, seconds; MESH: balls (|B*|), faces, euler,\n"
     "               euler_input, epsilon, hausdorff_upper, rounds, cell, grade, seconds\n"
     "\n"
@@ -123,6 +124,8 @@ static void print_summary(const cli_common *c, const fl_balls *b, const fl_mesh 
         cli_json_double(&j, "cell", st->cell);
         cli_json_double(&j, "max_vertex_offset", st->max_vertex_offset);
         cli_json_int(&j, "euler_expected", chk->euler_expected);
+        cli_json_int(&j, "components", chk->components);
+        cli_json_int(&j, "components_expected", chk->components_expected);
         cli_json_bool(&j, "topology_ok", chk->topology_ok);
         cli_json_double(&j, "grade", chk->grade);
         cli_json_int(&j, "attempts", chk->attempts);
@@ -142,10 +145,12 @@ static void print_summary(const cli_common *c, const fl_balls *b, const fl_mesh 
     }
     if (!chk->topology_ok)
         fprintf(stderr,
-                "flintstone skin: warning: the mesh's Euler characteristic %lld is not %lld, "
-                "twice the union of balls'; the grid does not resolve the skin's topology (%s); "
-                "try a smaller --cell or --grade\n",
-                rep->euler, chk->euler_expected, chk->grade > 0 ? "graded grid" : "uniform grid");
+                "flintstone skin: warning: the mesh has Euler characteristic %lld in %lld "
+                "component%s where the union of balls gives %lld in %lld; the grid does not "
+                "resolve the skin's topology (%s); try a smaller --cell or --grade\n",
+                rep->euler, chk->components, chk->components == 1 ? "" : "s",
+                chk->euler_expected, chk->components_expected,
+                chk->grade > 0 ? "graded grid" : "uniform grid");
 }
 
 /* B* as "x y z w" lines (the --balls format), written atomically. */

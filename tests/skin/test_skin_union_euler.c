@@ -71,6 +71,17 @@ static void test_union_euler_matches_alpha_oracle_on_random_sets(void)
     free(b);
 }
 
+/* Balls of weight w at the 8 corners of the cube [-1, 1]^3. */
+static void cube_corner_balls(double *b, double w)
+{
+    for (int i = 0; i < 8; i++) {
+        b[4 * i + 0] = i & 1 ? 1 : -1;
+        b[4 * i + 1] = i & 2 ? 1 : -1;
+        b[4 * i + 2] = i & 4 ? 1 : -1;
+        b[4 * i + 3] = w;
+    }
+}
+
 /* Balls of weight w at the 8 corners of the cube [-1, 1]^3: side 2, face diagonal 2 sqrt 2,
  * centre at squared distance 3 from every corner. Open balls:
  *   w = 1   sides tangent, 8 separate balls:                      chi 8
@@ -90,12 +101,7 @@ static void test_cospherical_cube_corners_have_the_elementary_euler(void)
     static const long long chi[] = {8, -4, -4, 2, 2, 1, -4, 2, 2, 1};
     for (int k = 0; k < 10; k++) {
         double b[32];
-        for (int i = 0; i < 8; i++) {
-            b[4 * i + 0] = i & 1 ? 1 : -1;
-            b[4 * i + 1] = i & 2 ? 1 : -1;
-            b[4 * i + 2] = i & 4 ? 1 : -1;
-            b[4 * i + 3] = w[k];
-        }
+        cube_corner_balls(b, w[k]);
         long long got = union_euler(b, 8);
         CHECK_MSG(got == chi[k], "w %g: chi %lld, expected %lld", w[k], got, chi[k]);
         int ok;
@@ -426,12 +432,7 @@ static void test_union_betti_of_elementary_shapes(void)
                                          {1, 0, 1}, {1, 0, 1}, {1, 0, 0}};
     for (int k = 0; k < 6; k++) {
         double b[32];
-        for (int i = 0; i < 8; i++) {
-            b[4 * i + 0] = i & 1 ? 1 : -1;
-            b[4 * i + 1] = i & 2 ? 1 : -1;
-            b[4 * i + 2] = i & 4 ? 1 : -1;
-            b[4 * i + 3] = w[k];
-        }
+        cube_corner_balls(b, w[k]);
         union_betti(b, 8, be);
         CHECK_MSG(be[0] == want[k][0] && be[1] == want[k][1] && be[2] == want[k][2],
                   "w %g: betti %lld %lld %lld", w[k], be[0], be[1], be[2]);

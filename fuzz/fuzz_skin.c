@@ -70,8 +70,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         FZ_ASSERT(bst == FL_OK, "union Betti failed (%d): %s", (int)bst, err.message);
         FZ_ASSERT(betti[0] - betti[1] + betti[2] == chi && betti[1] >= 0 && betti[2] == 0 &&
                       betti[0] <= count && betti[0] >= (count > 0),
-                  "union Betti %lld %lld %lld, chi %lld, %lld balls", betti[0], betti[1],
-                  betti[2], chi, count);
+                  "union Betti %lld %lld %lld, chi %lld, %lld balls", betti[0], betti[1], betti[2],
+                  chi, count);
         FZ_ASSERT(!apart || betti[0] == count, "union b0 %lld of %lld separate balls", betti[0],
                   count);
     }

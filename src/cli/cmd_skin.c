@@ -148,9 +148,8 @@ static void print_summary(const cli_common *c, const fl_balls *b, const fl_mesh 
                 "flintstone skin: warning: the mesh has Euler characteristic %lld in %lld "
                 "component%s where the union of balls gives %lld in %lld; the grid does not "
                 "resolve the skin's topology (%s); try a smaller --cell or --grade\n",
-                rep->euler, chk->components, chk->components == 1 ? "" : "s",
-                chk->euler_expected, chk->components_expected,
-                chk->grade > 0 ? "graded grid" : "uniform grid");
+                rep->euler, chk->components, chk->components == 1 ? "" : "s", chk->euler_expected,
+                chk->components_expected, chk->grade > 0 ? "graded grid" : "uniform grid");
 }
 
 /* B* as "x y z w" lines (the --balls format), written atomically. */

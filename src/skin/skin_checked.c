@@ -22,15 +22,6 @@ static long long mesh_euler(const fl_mesh *m)
     return (long long)m->vertex_count - (long long)m->triangle_count / 2;
 }
 
-static uint32_t root_of(uint32_t *parent, uint32_t a)
-{
-    while (parent[a] != a) {
-        parent[a] = parent[parent[a]];
-        a = parent[a];
-    }
-    return a;
-}
-
 /* The connected components of the mesh's triangles (vertices joined by triangles); -1 when out
  * of memory. */
 static long long mesh_components(const fl_mesh *m)
@@ -46,16 +37,14 @@ static long long mesh_components(const fl_mesh *m)
         parent[i] = (uint32_t)i;
     for (size_t t = 0; t < m->triangle_count; t++) {
         const uint32_t *v = m->tri + 3 * t;
-        uint32_t a = root_of(parent, v[0]);
         for (int k = 0; k < 3; k++) {
             used[v[k]] = 1;
-            uint32_t b = root_of(parent, v[k]);
-            if (b != a) parent[b] = a;
+            fl_uf_union(parent, v[0], v[k]);
         }
     }
     long long count = 0;
     for (size_t i = 0; i < m->vertex_count; i++)
-        count += used[i] && root_of(parent, (uint32_t)i) == i;
+        count += used[i] && fl_uf_find(parent, (uint32_t)i) == i;
     free(parent);
     free(used);
     return count;
@@ -108,8 +97,7 @@ fl_status fl_skin_mesh_checked(const double *xyzw, size_t n, const fl_skin_optio
             fl_mesh_free(out);
             return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
         }
-        c->topology_ok =
-            c->euler == c->euler_expected && c->components == c->components_expected;
+        c->topology_ok = c->euler == c->euler_expected && c->components == c->components_expected;
         if (c->topology_ok) break;
     }
     fl_error_clear(err);

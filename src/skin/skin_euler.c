@@ -96,23 +96,7 @@ static void sort4(uint32_t *v)
         }
 }
 
-/* ---- Betti numbers: union-find over vertices (b0) and over the complement (b2) ---- */
-
-static uint32_t uf_find(uint32_t *parent, uint32_t a)
-{
-    while (parent[a] != a) {
-        parent[a] = parent[parent[a]];
-        a = parent[a];
-    }
-    return a;
-}
-
-static void uf_union(uint32_t *parent, uint32_t a, uint32_t b)
-{
-    a = uf_find(parent, a);
-    b = uf_find(parent, b);
-    if (a != b) parent[a < b ? b : a] = a < b ? a : b;
-}
+/* ---- Betti numbers: union-find (core.h) over vertices (b0) and over the complement (b2) ---- */
 
 static uint32_t *uf_new(size_t n)
 {
@@ -149,12 +133,13 @@ static long long complement_cavities(const fl_rt3 *rt, const unsigned char *tet_
             key.v[3] = UINT32_MAX;
             sort4(key.v);
             const simplex_rec *f = bsearch(&key, tri, tri_count, sizeof *tri, cmp_rec);
-            if (f && !f->in) uf_union(parent, (uint32_t)t, u == UINT32_MAX ? (uint32_t)count : u);
+            if (f && !f->in)
+                fl_uf_union(parent, (uint32_t)t, u == UINT32_MAX ? (uint32_t)count : u);
         }
     }
     long long roots = 0;
     for (size_t t = 0; t <= count; t++)
-        roots += (t == count || !tet_in[t]) && uf_find(parent, (uint32_t)t) == t;
+        roots += (t == count || !tet_in[t]) && fl_uf_find(parent, (uint32_t)t) == t;
     free(parent);
     return roots - 1;
 }
@@ -162,8 +147,8 @@ static long long complement_cavities(const fl_rt3 *rt, const unsigned char *tet_
 /* chi(K) from the tetrahedra of rt over `balls` (auxiliary balls included: they are decided
  * like the others and never come out in K), and with betti non-NULL also b0 and b2 of K into
  * betti[0] and betti[2] (b1 is then b0 + b2 - chi). */
-static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *chi,
-                            long long *betti, fl_error *err)
+static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *chi, long long *betti,
+                            fl_error *err)
 {
     size_t count = rt->tet_count;
     simplex_rec *level = fl_alloc_array(count ? count : 1, sizeof *level);
@@ -217,7 +202,7 @@ static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *ch
             if (in < 0) goto nomem;
             if (vertex_parent && k == 0) /* the entries of vertex X: its edges X + opp */
                 for (size_t g = i; g < j; g++)
-                    if (e[g].in) uf_union(vertex_parent, e[g].v[0], e[g].opp);
+                    if (e[g].in) fl_uf_union(vertex_parent, e[g].v[0], e[g].opp);
             memmove(e[count].v, e[i].v, sizeof e[count].v);
             e[count++].in = in;
             if (in) sum += k % 2 ? -1 : 1;
@@ -231,7 +216,7 @@ static fl_status dual_euler(const double *balls, const fl_rt3 *rt, long long *ch
     if (betti) {
         betti[0] = 0;
         for (size_t i = 0; i < count; i++) /* level: the vertices with their flags */
-            betti[0] += level[i].in && uf_find(vertex_parent, level[i].v[0]) == level[i].v[0];
+            betti[0] += level[i].in && fl_uf_find(vertex_parent, level[i].v[0]) == level[i].v[0];
     }
     free(level);
     free(tet_in);

@@ -190,8 +190,7 @@ static int focus_critical(const fl_skin_function *g, size_t id, const double a[3
  * smallest ball's, so one near-tangent pair (|w_X| -> 0) cannot blow the tree up. The foci of
  * the critical ones (focus_critical) go to `foci`, to be grid points themselves. */
 static fl_status make_sources(const fl_skin_function *g, const double *xyzw, size_t n, double t,
-                              double grade, double hmax, fl_vec *src, fl_vec *foci,
-                              fl_error *err)
+                              double grade, double hmax, fl_vec *src, fl_vec *foci, fl_error *err)
 {
     double hmin = HUGE_VAL;
     for (size_t i = 0; i < n; i++) {

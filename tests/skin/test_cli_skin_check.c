@@ -114,8 +114,10 @@ static long long expected_components(const char *balls_path)
             double r = sqrt(p[3]) + sqrt(q[3]);
             if (d2 < r * r) {
                 size_t a = i, c = j;
-                while (parent[a] != a) a = parent[a];
-                while (parent[c] != c) c = parent[c];
+                while (parent[a] != a)
+                    a = parent[a];
+                while (parent[c] != c)
+                    c = parent[c];
                 parent[a] = c;
             }
         }

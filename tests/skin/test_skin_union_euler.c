@@ -283,8 +283,8 @@ static void union_betti(const double *b, size_t n, long long *be)
     fl_error err;
     be[0] = be[1] = be[2] = -12345;
     CHECK_STATUS(fl_balls_union_betti(b, n, be, &err), FL_OK, &err);
-    CHECK_MSG(be[0] - be[1] + be[2] == union_euler(b, n), "betti %lld %lld %lld, chi %lld",
-              be[0], be[1], be[2], union_euler(b, n));
+    CHECK_MSG(be[0] - be[1] + be[2] == union_euler(b, n), "betti %lld %lld %lld, chi %lld", be[0],
+              be[1], be[2], union_euler(b, n));
 }
 
 static int find_root(int *parent, int a)
@@ -357,7 +357,7 @@ static long long lattice_cavities(const unsigned char *present, int m)
         parent[i] = i;
 #define LATTICE_AT(x, y, z)                                                                        \
     ((x) >= 0 && (y) >= 0 && (z) >= 0 && (x) < m && (y) < m && (z) < m &&                          \
-     present[((x) * m + (y)) * m + (z)])
+     present[((x)*m + (y)) * m + (z)])
     for (int x = -1; x < m; x++)
         for (int y = -1; y < m; y++)
             for (int z = -1; z < m; z++) {
@@ -373,8 +373,10 @@ static long long lattice_cavities(const unsigned char *present, int m)
                     for (int k = 0; k < 4; k++) {
                         int c[3] = {x, y, z}, o = 0;
                         for (int a = 0; a < 3; a++) {
-                            if (a == axis) c[a] += 1;
-                            else c[a] += (k >> o++) & 1;
+                            if (a == axis)
+                                c[a] += 1;
+                            else
+                                c[a] += (k >> o++) & 1;
                         }
                         full &= LATTICE_AT(c[0], c[1], c[2]);
                     }
@@ -412,8 +414,10 @@ static void test_union_betti_of_lattice_subsets_matches_the_cube_graph(void)
         long long be[3];
         union_betti(b, (size_t)n, be);
         long long want2 = lattice_cavities(present, M), want0 = overlap_components(b, n);
-        CHECK_MSG(be[0] == want0 && be[2] == want2, "rep %d (%d balls): b0 %lld b2 %lld, "
-                  "expected %lld and %lld", rep, n, be[0], be[2], want0, want2);
+        CHECK_MSG(be[0] == want0 && be[2] == want2,
+                  "rep %d (%d balls): b0 %lld b2 %lld, "
+                  "expected %lld and %lld",
+                  rep, n, be[0], be[2], want0, want2);
         CHECK(be[1] >= 0);
         cavities += be[2] > 0;
         tunnels += be[1] > 0;
@@ -463,13 +467,11 @@ static void test_union_betti_of_elementary_shapes(void)
         lat[4 * i + 3] = 0.36;
     }
     union_betti(lat, 27, be);
-    CHECK_MSG(be[0] == 1 && be[1] == 28 && be[2] == 0, "betti %lld %lld %lld", be[0], be[1],
-              be[2]);
+    CHECK_MSG(be[0] == 1 && be[1] == 28 && be[2] == 0, "betti %lld %lld %lld", be[0], be[1], be[2]);
     for (int i = 0; i < 27; i++)
         lat[4 * i + 3] = 0.5625;
     union_betti(lat, 27, be);
-    CHECK_MSG(be[0] == 1 && be[1] == 0 && be[2] == 8, "betti %lld %lld %lld", be[0], be[1],
-              be[2]);
+    CHECK_MSG(be[0] == 1 && be[1] == 0 && be[2] == 8, "betti %lld %lld %lld", be[0], be[1], be[2]);
     /* nothing, one ball, two apart, coplanar ring (the auxiliary-ball path) */
     union_betti(NULL, 0, be);
     CHECK(be[0] == 0 && be[1] == 0 && be[2] == 0);

@@ -2,12 +2,12 @@
  * positive, sometimes zero, negative, NaN or huge) and a shrink factor t: fl_skin_function_new +
  * fl_skin_function_value, fl_balls_union_euler and _betti (chi of the union in [0, positive
  * balls], their count when no two meet; the Betti numbers sum to chi), then fl_skin_mesh with a
- * small cube budget. Invariants: NaN/Inf, a value beyond 1e100 or no positive weight gives
- * FL_ERR_INPUT, t outside (0, 1) FL_ERR_USAGE; G < 0 at the centre of every ball of positive
- * weight (the centre is inside b^t, so inside the body), G > 0 far outside every ball; on
- * success the mesh is closed, manifold and oriented (fl_mesh_check), outward (positive volume),
- * with finite vertices inside the balls' bounding box, and the measured vertex offset within a
- * grid cell. */
+ * small cube budget, uniform or graded with local repair (fl_skin_options.repair). Invariants:
+ * NaN/Inf, a value beyond 1e100 or no positive weight gives FL_ERR_INPUT, t outside (0, 1)
+ * FL_ERR_USAGE; G < 0 at the centre of every ball of positive weight (the centre is inside b^t, so
+ * inside the body), G > 0 far outside every ball; on success the mesh is closed, manifold and
+ * oriented (fl_mesh_check), outward (positive volume), with finite vertices inside the balls'
+ * bounding box, and the measured vertex offset within a grid cell. */
 #include "fuzz_common.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -116,6 +116,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     for (size_t i = 0; i < n; i++) wmax = fmax(wmax, xyzw[4 * i + 3]);
     if (head & 8) o.cell = (double)(1 + fz_byte(&in) % 8) / 8.0;
     else o.cell = sqrt(t * wmax) / (1 + fz_byte(&in) % 3);
+    if (head & 16) { /* the graded grid, with its local repair (skin_defects.c) */
+        uint8_t gb = fz_byte(&in);
+        o.grade = 0.75 * (1 + gb % 4);
+        o.repair = 1 + (gb >> 2) % 2;
+    }
     fl_mesh m;
     fl_skin_stats stats;
     st = fl_skin_mesh(xyzw, n, &o, &m, &stats, &err);

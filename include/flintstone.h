@@ -1782,6 +1782,11 @@ typedef struct fl_skin_options {
                         * exactly triangulated): cells of grade times the local feature size of
                         * the skin (shrunk ball radius, neck waist, ...), at most `cell` (0: the
                         * largest shrunk radius times grade); docs/skin.md */
+    int repair;        /* graded grid only: when > 0, the mesh's Euler characteristic and
+                        * components are compared with the skin's (fl_balls_union_betti) and,
+                        * while they differ, the grid is refined in boxes round the mesh's
+                        * local handles and extra small components and the mesh redone, at
+                        * most this many times (docs/skin.md, round 17). 0: mesh once */
 } fl_skin_options;
 
 /* What fl_skin_mesh measured (optional). */
@@ -1793,6 +1798,7 @@ typedef struct fl_skin_stats {
                                  solved in closed form inside one mixed cell need none) */
     double max_vertex_offset; /* largest |G(v)| / |grad G(v)| over the vertices: a first-order
                                  estimate of their distance to the skin */
+    unsigned repairs;         /* meshes redone by fl_skin_options.repair */
 } fl_skin_stats;
 
 /* Triangulates skin^t(B) of the n balls xyzw[4n]: marching tetrahedra on the Kuhn
@@ -1842,7 +1848,8 @@ typedef struct fl_skin_check {
 } fl_skin_check;
 
 /* fl_skin_mesh with a topology check. With opt NULL or opt->cell and opt->grade both 0 (the
- * default), meshes on the graded grid of grade 1.5, and when the mesh's Euler characteristic
+ * default), meshes on the graded grid of grade 1.5 with opt->repair (0: 3) local refinements,
+ * and when the mesh's Euler characteristic
  * is not 2 chi(union of the balls) or its number of components not b0 + b2 of the union
  * (fl_balls_union_betti) retries at grade 0.75, then on the uniform grid of the
  * default cell, keeping the first mesh that matches, else the last (finest) one with
@@ -1893,6 +1900,8 @@ typedef struct fl_skin_approx_options {
                          * of grade 2.2 (x0.6 a later round) when the topology came out wrong;
                          * > 0 the graded grid of this grade only (fl_skin_options.grade, cells
                          * at most `cell`); < 0 the uniform grid only */
+    int repair;         /* local refinements of a graded mesh whose topology is not the union's
+                         * (fl_skin_options.repair); 0 means none */
 } fl_skin_approx_options;
 
 /* The result of fl_skin_approx. Free with fl_skin_approx_free. */
@@ -1910,6 +1919,7 @@ typedef struct fl_skin_approx {
     long long euler_input; /* Euler characteristic of the input */
     int rounds;            /* constructions done */
     int closed_manifold;   /* the skin mesh is closed, 2-manifold and oriented */
+    unsigned repairs;      /* local refinements of the skin mesh's graded grid (its stats) */
     int verified;          /* 1 iff hausdorff[1] <= epsilon, euler == euler_input and
                               closed_manifold */
 } fl_skin_approx;

@@ -11,19 +11,19 @@
 #include "core/core.h"
 
 static const char *usage_text =
-    "usage: flintstone skin --balls BALLS [--t T] [--cell H] [--grade G] [-o SKIN.off] [--json]\n"
-    "       [--quiet]\n"
-    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [--grade G] [--placement P]\n"
-    "       [--star B]\n"
-    "       [-o SKIN.off] [--json]\n"
+    "usage: flintstone skin --balls BALLS [--t T] [--cell H] [--grade G] [--repair N]\n"
+    "       [-o SKIN.off] [--json] [--quiet]\n"
+    "       flintstone skin MESH --epsilon E [--t T] [--cell H] [--grade G] [--repair N]\n"
+    "       [--placement P] [--star B] [-o SKIN.off] [--json]\n"
     "\n"
     "Triangulates the skin surface skin^t(B) of a ball set: the boundary of the union of the\n"
     "convex combinations of the balls, each shrunk to sqrt(t) times its radius. BALLS holds one\n"
     "ball a line, \"x y z w\" with w the squared radius (.xyzw .txt .csv). The mesh is closed,\n"
     "oriented and 2-manifold; its vertices lie on the skin to rounding. Its topology is\n"
     "checked: the skin's Euler characteristic is exactly twice the union of balls' (computed\n"
-    "exactly). By default the mesh is made on the graded grid of grade 1.5; when its Euler\n"
-    "characteristic is wrong it is made again at grade 0.75, then on the uniform grid of the\n"
+    "exactly). By default the mesh is made on the graded grid of grade 1.5, refined locally\n"
+    "round false handles and bubbles (--repair); when its Euler characteristic or number of\n"
+    "components is still wrong it is made again at grade 0.75, then on the uniform grid of the\n"
     "default cell; the first mesh that passes is kept. If none passes (or --cell / --grade\n"
     "was given and the check fails) the mesh is written with a warning on stderr.\n"
     "\n"
@@ -46,12 +46,17 @@ static const char *usage_text =
     "               (shrunk radius, neck waist), at most H; exactly triangulated, crack-free;\n"
     "               one mesh. With MESH: default uniform, then graded 2.2 when the topology\n"
     "               is wrong\n"
+    "  --repair N   graded grid: while the mesh has more genus or components than the skin\n"
+    "               (the union of balls' Betti numbers), refine the grid along the mesh round\n"
+    "               its small handles and bubbles and mesh again, at most N times (default:\n"
+    "               3 in the checked default, 0 with --grade and with MESH)\n"
     "  -o FILE      the mesh (.off .obj .ply .stl)\n"
     "  --json       --balls: balls, vertices, faces, euler, genus, closed, manifold, cell,\n"
     "               max_vertex_offset, euler_expected, components, components_expected,\n"
     "               topology_ok, grade (0: uniform),\n"
-    "               attempts, seconds; MESH: balls (|B*|), faces, euler,\n"
-    "               euler_input, epsilon, hausdorff_upper, rounds, cell, grade, seconds\n"
+    "               attempts, repairs, seconds; MESH: balls (|B*|), faces, euler,\n"
+    "               euler_input, epsilon, hausdorff_upper, rounds, cell, grade, repairs,\n"
+    "               seconds\n"
     "\n"
     "example: flintstone skin --balls balls.xyzw --t 0.5 -o skin.off --json\n"
     "example: flintstone skin cube.off --epsilon 0.5 -o skin.off --json\n";
@@ -59,7 +64,7 @@ static const char *usage_text =
 typedef struct skin_args {
     const char *balls, *mesh, *star;
     double t, cell, epsilon, grade;
-    int has_epsilon;
+    int has_epsilon, repair;
     fl_skin_placement placement;
 } skin_args;
 
@@ -72,7 +77,7 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
         const char *o = argv[i];
         int value = !strcmp(o, "--balls") || !strcmp(o, "--t") || !strcmp(o, "--cell") ||
                     !strcmp(o, "--epsilon") || !strcmp(o, "--placement") || !strcmp(o, "--star") ||
-                    !strcmp(o, "--grade");
+                    !strcmp(o, "--grade") || !strcmp(o, "--repair");
         if (value && i + 1 >= argc) return cli_fail(1, "skin: %s needs a value", o);
         if (!strcmp(o, "--balls")) {
             a->balls = argv[++i];
@@ -85,6 +90,12 @@ static int parse(int argc, char **argv, cli_common *c, skin_args *a)
         } else if (!strcmp(o, "--grade")) {
             if (cli_parse_double(argv[++i], &a->grade) || !(a->grade > 0) || !isfinite(a->grade))
                 return cli_fail(1, "skin: --grade takes a number > 0");
+        } else if (!strcmp(o, "--repair")) {
+            double rounds;
+            if (cli_parse_double(argv[++i], &rounds) || !(rounds >= 0 && rounds <= 100) ||
+                rounds != floor(rounds))
+                return cli_fail(1, "skin: --repair takes a whole number in [0, 100]");
+            a->repair = (int)rounds;
         } else if (!strcmp(o, "--epsilon")) {
             /* a bad value is bad input to the approximation (FL_ERR_INPUT), as in the library */
             if (cli_parse_double(argv[++i], &a->epsilon) || !(a->epsilon > 0) ||
@@ -129,6 +140,7 @@ static void print_summary(const cli_common *c, const fl_balls *b, const fl_mesh 
         cli_json_bool(&j, "topology_ok", chk->topology_ok);
         cli_json_double(&j, "grade", chk->grade);
         cli_json_int(&j, "attempts", chk->attempts);
+        cli_json_int(&j, "repairs", st->repairs);
         cli_json_double(&j, "seconds", seconds);
         cli_json_end(&j);
     } else if (!c->quiet) {
@@ -181,6 +193,7 @@ static int skin_of_mesh(const cli_common *c, const skin_args *a)
         opt.t = a->t;
         opt.cell = a->cell;
         opt.grade = a->grade;
+        opt.repair = a->repair;
         opt.placement = a->placement;
         opt.progress = cli_progress_fn;
         opt.progress_user = &prog;
@@ -207,6 +220,7 @@ static int skin_of_mesh(const cli_common *c, const skin_args *a)
         cli_json_int(&j, "rounds", ap.rounds);
         cli_json_double(&j, "cell", ap.cell);
         cli_json_double(&j, "grade", ap.grade);
+        cli_json_int(&j, "repairs", ap.repairs);
         cli_json_double(&j, "seconds", seconds);
         cli_json_end(&j);
     } else if (st == FL_OK && !c->quiet) {
@@ -252,6 +266,7 @@ int cmd_skin(int argc, char **argv)
         opt.t = a.t;
         opt.cell = a.cell;
         opt.grade = a.grade;
+        opt.repair = a.repair;
         opt.progress = cli_progress_fn;
         opt.progress_user = &prog;
         st = fl_skin_mesh_checked(balls.xyzw, balls.count, &opt, &mesh, &stats, &check, &err);

@@ -10,11 +10,16 @@
 
 #include "core/core.h"
 #include "skin/skin_eps.h"
+#include "skin/skin_internal.h"
 
 /* gamma of Algorithm 1 (§4.2): radii below gamma lgs, 0 < gamma < 1/2 */
 #define SKIN_GAMMA 0.45
 /* default mesher grade of the approximation (fl_skin_approx_options.grade) */
 #define SKIN_GRADE 2.2
+/* default local refinements of a graded mesh (fl_skin_approx_options.repair): none, since on
+ * the npm bunny's B* (grade 4) each refinement round the bubbles multiplied (3 -> 10 -> 52 -> 72
+ * components; docs/skin.md round 17) */
+#define SKIN_REPAIR 0
 
 void fl_skin_approx_free(fl_skin_approx *a)
 {
@@ -52,10 +57,12 @@ static int topology_ok(const fl_skin_approx *a)
 static fl_status mesh_checked(fl_skin_approx *a, const fl_skin_options *so, fl_error *err)
 {
     fl_mesh_free(&a->skin);
-    /* no stats: their vertex offsets cost 7 evaluations of G a vertex and the certified
-     * Hausdorff distance measures what matters */
-    fl_status st = fl_skin_mesh(a->star.xyzw, a->star.count, so, &a->skin, NULL, err);
+    /* no vertex offsets: they cost a walk a vertex and the certified Hausdorff distance
+     * measures what matters */
+    fl_skin_stats ss;
+    fl_status st = skin_mesh_run(a->star.xyzw, a->star.count, so, &a->skin, &ss, 0, err);
     if (st != FL_OK) return st;
+    a->repairs = ss.repairs;
     a->cell = so->cell;
     a->grade = so->grade;
     fl_mesh_check_options co = {0};
@@ -129,6 +136,9 @@ static fl_status round_once(const fl_mesh *mesh, skin_eps_grid *g, double eps, d
      * Hausdorff miss from a thin tip the grid cut: the tetrahedron at eps 0.15 gave Euler 2
      * and Hausdorff 0.154 uniform, 0.112 graded); > 0: graded only; < 0: uniform only */
     so.grade = o->grade > 0 ? grade : 0;
+    /* on request the graded grid refines itself round false handles and bubbles
+     * (skin_defects.c) */
+    so.repair = o->repair > 0 ? o->repair : SKIN_REPAIR;
     st = mesh_verified(mesh, eps, o, &so, a, err);
     if (st == FL_OK && o->grade == 0 && !a->verified) {
         so.grade = grade;
@@ -147,7 +157,7 @@ fl_status fl_skin_approx_build(const fl_mesh *mesh, double epsilon,
     if (opt) o = *opt;
     if (o.t == 0) o.t = 0.5;
     if (!(o.t > 0 && o.t < 1) || !(o.cell >= 0) || !isfinite(o.grade) || o.max_rounds < 0 ||
-        !(o.budget_seconds >= 0) ||
+        o.repair < 0 || !(o.budget_seconds >= 0) ||
         (o.placement != FL_SKIN_PLACE_ALGORITHM1 && o.placement != FL_SKIN_PLACE_SUBDIVISION))
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "skin: t must be in (0, 1), cell, rounds and budget >= 0, placement one "

@@ -190,8 +190,22 @@ static int focus_critical(const fl_skin_function *g, size_t id, const double a[3
  * smallest ball's, so one near-tangent pair (|w_X| -> 0) cannot blow the tree up. The foci of
  * the critical ones (focus_critical) go to `foci`, to be grid points themselves. */
 static fl_status make_sources(const fl_skin_function *g, const double *xyzw, size_t n, double t,
-                              double grade, double hmax, fl_vec *src, fl_vec *foci, fl_error *err)
+                              double grade, double hmax, const fl_vec *boxes, fl_vec *src,
+                              fl_vec *foci, fl_error *err)
 {
+    /* the boxes of local refinement (fl_skin_options.repair): the ball round each */
+    for (size_t i = 0; boxes && i < boxes->count; i++) {
+        const skin_box *b = (const skin_box *)boxes->data + i;
+        size_src s = {{0, 0, 0}, 0, b->h};
+        for (int c = 0; c < 3; c++) {
+            s.c[c] = (b->lo[c] + b->hi[c]) / 2;
+            s.r += (b->hi[c] - b->lo[c]) * (b->hi[c] - b->lo[c]) / 4;
+        }
+        s.r = sqrt(s.r);
+        if (!(s.h > 0) || !isfinite(s.r) || !isfinite(s.c[0] + s.c[1] + s.c[2])) continue;
+        if (fl_vec_push(src, &s, 1))
+            return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+    }
     double hmin = HUGE_VAL;
     for (size_t i = 0; i < n; i++) {
         const double *b = xyzw + 4 * i;
@@ -204,10 +218,16 @@ static fl_status make_sources(const fl_skin_function *g, const double *xyzw, siz
     double floor_h = hmin / 16, mt = fmin(t, 1 - t);
     for (size_t i = 0; i < g->simplex_count; i++) {
         const skin_simplex *x = &g->simplex[i];
-        if (x->k == 0 || !(skin_reach(g->balls, x, g->t) > 0) || !focus_inside(x)) continue;
+        if (!(skin_reach(g->balls, x, g->t) > 0) || !focus_inside(x)) continue;
         double za[3], ze[3][3], f[3];
         skin_frame(g->balls, x, za, ze);
         skin_focus(x, za, ze, f);
+        if (x->k == 0) { /* a ball: its centre is a minimum of G when in its power cell (its
+                          * size is the ball's source above) */
+            if (focus_critical(g, i, za, f) && fl_vec_push(foci, f, 1))
+                return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
+            continue;
+        }
         double a = fabs(skin_weight(g->balls, x, za, f));
         size_src s = {{f[0], f[1], f[2]}, sqrt(a), grade * sqrt(mt * a)};
         s.h = fmin(hmax, fmax(s.h, floor_h));
@@ -368,7 +388,17 @@ static fl_status march_delaunay(dmarch *m, const fl_rt3 *dt, const fl_skin_optio
  * CORNER_WEIGHT times the smallest leaf squared, and the regular triangulation of these
  * balls is used: a generic lifting, decided by the floating-point filters. It is still exact
  * (fl_rt3_build), so a valid triangulation of the corners' convex hull, the root cube, whose
- * 8 corners are extreme and never hidden; a hidden inner corner is simply not used. */
+ * 8 corners are extreme and never hidden; a hidden inner corner is simply not used.
+ * The weight is a hash of the point's coordinates (round 17; it was the next number of one
+ * sequence in point order), so adding points in one place leaves the triangulation elsewhere
+ * as it was: the regular triangulation is unique, and a tetrahedron changes only when a new
+ * point lies in its orthogonal ball. Local refinement (fl_skin_options.repair) needs that:
+ * with the sequence, refining two boxes of the npm bunny re-drew every weight after them and a
+ * false handle appeared elsewhere (docs/skin.md round 16). The weight bound follows the
+ * smallest leaf, so a refinement scales every weight alike; that keeps how the weights break
+ * the ties of exactly cospherical corners (on a common sphere |p|^2 is affine in p, so the
+ * lifted points' lower hull depends on the weights only up to a positive factor), and the
+ * other configurations are decided by the positions, far above the weights. */
 #define CORNER_WEIGHT 1e-2
 static fl_status corner_triangulation(const octree *ot, fl_rt3 *rt, fl_error *err)
 {
@@ -376,11 +406,14 @@ static fl_status corner_triangulation(const octree *ot, fl_rt3 *rt, fl_error *er
     double *b = fl_alloc_array(n, 4 * sizeof(double));
     if (!b) return fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");
     const double *p = ot->pts.data, wmax = CORNER_WEIGHT * ot->hsmall * ot->hsmall;
-    uint64_t h = 0x9e3779b97f4a7c15u;
     for (size_t i = 0; i < n; i++) {
-        h ^= h << 13, h ^= h >> 7, h ^= h << 17; /* xorshift64: fixed seed, reproducible */
-        for (int c = 0; c < 3; c++)
+        uint64_t h = 0x9e3779b97f4a7c15u;
+        for (int c = 0; c < 3; c++) {
+            uint64_t bits;
+            memcpy(&bits, p + 3 * i + c, sizeof bits);
+            h = mix64(h ^ bits);
             b[4 * i + c] = p[3 * i + c];
+        }
         b[4 * i + 3] = wmax * (double)(h >> 11) * 0x1p-53;
     }
     fl_status st = fl_rt3_build(b, n, NULL, rt, err);
@@ -429,8 +462,8 @@ static fl_status label_and_march(dmarch *m, const octree *ot, const fl_skin_opti
 }
 
 fl_status skin_graded_mesh(const fl_skin_function *g, const double *xyzw, size_t n,
-                           const fl_skin_options *o, fl_mesh *out, fl_skin_stats *stats,
-                           fl_error *err)
+                           const fl_skin_options *o, const fl_vec *boxes, fl_mesh *out,
+                           fl_skin_stats *stats, fl_error *err)
 {
     octree ot;
     memset(&ot, 0, sizeof ot);
@@ -446,7 +479,7 @@ fl_status skin_graded_mesh(const fl_skin_function *g, const double *xyzw, size_t
     fl_vec_init(&m.tri, 3 * sizeof(uint32_t));
     fl_vec foci;
     fl_vec_init(&foci, 3 * sizeof(double));
-    fl_status st = make_sources(g, xyzw, n, g->t, o->grade, o->cell, &src, &foci, err);
+    fl_status st = make_sources(g, xyzw, n, g->t, o->grade, o->cell, boxes, &src, &foci, err);
     if (!st) st = build_points(&ot, xyzw, n, &src, o->cell, err);
     if (!st && foci.count && fl_vec_push(&ot.pts, foci.data, foci.count))
         st = fl_fail(err, FL_ERR_NOMEM, NULL, -1, "skin: out of memory");

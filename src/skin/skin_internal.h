@@ -267,6 +267,26 @@ void skin_hand_over(fl_vec *xyz, fl_vec *tri, fl_mesh *out);
  * uniform path of fl_skin_mesh; g is the skin function of the balls, o->cell (> 0) the largest
  * cell. Fills out and the grid fields of stats (cell = the smallest leaf, cubes = leaves). */
 fl_status skin_graded_mesh(const fl_skin_function *g, const double *xyzw, size_t n,
-                           const fl_skin_options *o, fl_mesh *out, fl_skin_stats *stats,
-                           fl_error *err);
+                           const fl_skin_options *o, const fl_vec *boxes, fl_mesh *out,
+                           fl_skin_stats *stats, fl_error *err);
+
+/* fl_skin_mesh, with stats->max_vertex_offset measured only when `offsets` (it costs a walk
+ * a vertex; fl_skin_approx_build measures the certified distance instead). */
+fl_status skin_mesh_run(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
+                        fl_skin_stats *stats, int offsets, fl_error *err);
+
+/* A box [lo, hi] that wants cells of at most h (skin_defects.c -> skin_graded.c). */
+typedef struct skin_box {
+    double lo[3], hi[3], h;
+} skin_box;
+
+/* Connected components of a mesh's triangles; -1 when out of memory (skin_defects.c). */
+long long skin_mesh_components(const fl_mesh *m);
+
+/* Appends to boxes (skin_box) a box round the local handles of the closed 2-manifold mesh m
+ * when `handles` (the smallest windows of 8 to 16 local face sizes whose part has genus) and
+ * round its extra_components smallest components (skin_defects.c). FL_ERR_INPUT when m is not
+ * closed and 2-manifold. */
+fl_status skin_mesh_defects(const fl_mesh *m, const double *xyzw, size_t n, int handles,
+                            long long extra_components, fl_vec *boxes, fl_error *err);
 #endif

@@ -219,15 +219,13 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
         *why = WHY_MISSING;
         return *next == UINT32_MAX ? -1 : 0;
     }
-    double proj[3], q[3], ut[3], q2 = 0, p2 = 0;
+    double proj[3], q[3], ut[3];
     skin_focus(s, a, e, f);
     for (int c = 0; c < 3; c++) {
         proj[c] = a[c];
         for (int i = 0; i < s->k; i++)
             proj[c] += xi[i] * e[i][c];
         q[c] = x[c] - proj[c];
-        q2 += q[c] * q[c];
-        p2 += (proj[c] - f[c]) * (proj[c] - f[c]);
         ut[c] = t * (f[c] - a[c]) + q[c]; /* t (v - a), v = f + q/t in aff nu_X */
     }
     /* v in nu_X: pi_b(v) - pi_X(v) = -2 (v - a).e_b + |e_b|^2 - w_b + w_a >= 0 for every link
@@ -303,7 +301,7 @@ static int cell_test(const fl_skin_function *sk, uint32_t id, const double *x, d
             return -1;
         }
     }
-    *val = q2 - t / (1 - t) * p2 + t * skin_weight(sk->balls, s, a, f);
+    *val = skin_combination_value(sk->balls, s, t, a, e, mu, x);
     /* a dropped cell: every ball of X has weight <= 0, so G >= 0 on its whole mixed cell */
     if (id >= sk->simplex_count && !(*val >= 0)) *val = 0;
     return 1;

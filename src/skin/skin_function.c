@@ -32,11 +32,6 @@
 #include "core/core.h"
 #include "skin/skin_internal.h"
 
-/* Barycentric slack when deciding whether z* lies in a simplex: a z* just outside a simplex
- * lies in (or next to) a face that is itself a candidate, so the slack only avoids rejecting
- * both at a shared boundary; the value it admits differs from G by O(slack * w). */
-#define SKIN_BARY_SLACK 1e-12
-
 /* Inverts the k x k symmetric Gram matrix g (Gauss-Jordan with partial pivoting). Returns -1
  * when it is singular relative to its diagonal (affinely dependent centres). */
 static int invert_gram(int k, const double g[3][3], double inv[3][3])
@@ -111,10 +106,17 @@ int skin_simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simp
     return 0;
 }
 
-/* The mixed-cell quadric of s at x, or HUGE_VAL when the minimiser z* is not in s. */
+/* The value at x of the member of conv(X) nearest to X's minimiser z* (its barycentric
+ * coordinates clamped to >= 0, skin_combination_value): never below G(x) beyond rounding, and
+ * G(x) itself when z* lies in X. Until round 18 a z* more than 1e-12 outside X gave HUGE_VAL;
+ * but for a needle simplex (Gram condition ~1e10 and more) the computed coordinates are off by
+ * far more than that, and the true minimiser was rejected: G = 0.94 where it is 8e-7
+ * (tests/skin/test_skin_needle.c). A clamped candidate is still a member of conv(B), so
+ * accepting every candidate keeps the scan's minimum an upper bound that the minimiser's
+ * simplex makes exact. */
 static double simplex_value(const fl_skin_function *sk, const skin_simplex *s, const double *x)
 {
-    double t = sk->t, a[3], e[3][3], f[3], d[3], proj[3], xi[3] = {0, 0, 0};
+    double t = sk->t, a[3], e[3][3], d[3], mu[4], xi[3] = {0, 0, 0};
     skin_frame(sk->balls, s, a, e);
     for (int c = 0; c < 3; c++)
         d[c] = x[c] - a[c];
@@ -125,23 +127,11 @@ static double simplex_value(const fl_skin_function *sk, const skin_simplex *s, c
     for (int i = 0; i < s->k; i++) {
         for (int j = 0; j < s->k; j++)
             xi[i] += s->ginv[i][j] * et[j];
-        double mu = s->mu_f[i] + (xi[i] - s->mu_f[i]) / (1 - t);
-        if (mu < -SKIN_BARY_SLACK) return HUGE_VAL;
-        sum += mu;
+        mu[i + 1] = s->mu_f[i] + (xi[i] - s->mu_f[i]) / (1 - t);
+        sum += mu[i + 1];
     }
-    if (1 - sum < -SKIN_BARY_SLACK) return HUGE_VAL;
-    for (int c = 0; c < 3; c++) {
-        proj[c] = a[c];
-        for (int i = 0; i < s->k; i++)
-            proj[c] += xi[i] * e[i][c];
-    }
-    skin_focus(s, a, e, f);
-    double q2 = 0, p2 = 0;
-    for (int c = 0; c < 3; c++) {
-        q2 += (x[c] - proj[c]) * (x[c] - proj[c]);
-        p2 += (proj[c] - f[c]) * (proj[c] - f[c]);
-    }
-    return q2 - t / (1 - t) * p2 + t * skin_weight(sk->balls, s, a, f);
+    mu[0] = 1 - sum;
+    return skin_combination_value(sk->balls, s, t, a, e, mu, x);
 }
 
 int skin_index_cell(const fl_skin_function *skin, const double x[3], size_t *cell)
@@ -847,7 +837,7 @@ static int prism_near(const bary_map *m, const double c[3], double h)
     for (int i = 0; i <= m->k; i++) {
         double mu = m->base[i] + dot3(m->grad[i], d);
         /* 1e-9 of the terms' sizes: far above the rounding of mu here and in the scan (the
-         * Gram condition is <= 1e10 without SKIN_SHAKY_COND), and above its SKIN_BARY_SLACK */
+         * Gram condition is <= 1e10 without SKIN_SHAKY_COND) */
         double slack = 1e-9 * (1 + fabs(m->base[i]) + m->glen[i] * (dl + h));
         if (mu < -h * m->glen[i] - slack) return 0;
     }

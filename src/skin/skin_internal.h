@@ -137,6 +137,47 @@ static inline double skin_reach(const double *balls, const skin_simplex *s, doub
     return sqrt(t) * sqrt(wx);
 }
 
+/* G(x) on the mixed cell of s, from the barycentric coordinates mu[0..k] of its minimiser z*
+ * (mu[0] for the first ball, mu[i] for ball i; frame a, e as skin_frame gives it):
+ *     G = |x - z|^2 + t sum_i mu_i |z_i - z|^2 - t sum_i mu_i w_i,   z = sum_i mu_i z_i,
+ * the power distance of x to the shrunk combination ball (docs/skin.md, "The skin function"),
+ * evaluated relative to a. Equal to the quadric |q|^2 - t/(1-t)|p|^2 + t w_X of the mixed cell
+ * in exact arithmetic, but without its cancellation: the quadric subtracts two squares of the
+ * distance to the focus, which lies far away for a needle or sliver simplex, and on the npm
+ * bunny's B* it gave -1.8e-6 where G = +8.2e-7 (a thin sheet of false "inside" points, hence
+ * bubbles; docs/skin.md, round 18). The coordinates are clamped to >= 0 and renormalised, so
+ * the value is that of a member of conv(B): never below G(x) beyond rounding. */
+static inline double skin_combination_value(const double *balls, const skin_simplex *s, double t,
+                                            const double a[3], const double e[3][3],
+                                            const double mu[4], const double x[3])
+{
+    double lam[4], sum = 0, zr[3] = {0, 0, 0}, g = 0, var = 0, ws = 0;
+    for (int i = 0; i <= s->k; i++) {
+        lam[i] = mu[i] > 0 ? mu[i] : 0;
+        sum += lam[i];
+    }
+    if (!(sum > 0)) return HUGE_VAL;
+    for (int i = 0; i <= s->k; i++)
+        lam[i] /= sum;
+    for (int i = 1; i <= s->k; i++)
+        for (int c = 0; c < 3; c++)
+            zr[c] += lam[i] * e[i - 1][c];
+    for (int c = 0; c < 3; c++) {
+        double d = x[c] - a[c] - zr[c];
+        g += d * d;
+    }
+    for (int i = 0; i <= s->k; i++) {
+        double v2 = 0;
+        for (int c = 0; c < 3; c++) {
+            double d = (i ? e[i - 1][c] : 0) - zr[c];
+            v2 += d * d;
+        }
+        var += lam[i] * v2;
+        ws += lam[i] * balls[4 * (size_t)s->ball[i] + 3];
+    }
+    return g + t * (var - ws);
+}
+
 struct fl_skin_function {
     double t;
     double wmax; /* largest ball weight (> 0) */

@@ -7,7 +7,8 @@
  * orthogonal to aff X (docs/skin.md, "The skin function"). p and q are affine in x, so along a
  * segment x = a + s d inside mu_X, G is a quadratic polynomial in s. mu_X is convex (a Minkowski
  * sum of two convex polytopes), so a segment whose two ends lie in mu_X lies in it, and the
- * zero of G on it is a root of that polynomial: no evaluation of G is needed. */
+ * zero of G on it is a root of that polynomial, fixed by three values of that cell's G (no walk;
+ * skin_combination_value, which does not cancel like the quadric's coefficients). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -16,50 +17,58 @@
 #include "delaunay/delaunay_internal.h"
 #include "skin/skin_internal.h"
 
-/* The coefficients of G(a + s d) = c[0] s^2 + c[1] s + c[2] on the mixed cell of simplex id. */
-static void quadric_line(const fl_skin_function *sk, uint32_t id, const double a[3],
-                         const double d[3], double c[3])
+/* G at x from the quadric of simplex id's mixed cell (x in that cell, to rounding), in the
+ * cancellation-free form skin_combination_value; with grad, also its gradient there. */
+static double cell_value(const fl_skin_function *sk, uint32_t id, const double x[3], double grad[3])
 {
     const skin_simplex *s = &sk->simplex[id];
-    double kappa = sk->t / (1 - sk->t), r[3], ea[3], ed[3], xa[3] = {0, 0, 0}, xd[3] = {0, 0, 0};
-    double sa[3], e[3][3], f[3];
-    skin_frame(sk->balls, s, sa, e);
-    skin_focus(s, sa, e, f);
-    for (int k = 0; k < 3; k++)
-        r[k] = a[k] - sa[k];
-    for (int i = 0; i < s->k; i++) {
-        ea[i] = e[i][0] * r[0] + e[i][1] * r[1] + e[i][2] * r[2];
-        ed[i] = e[i][0] * d[0] + e[i][1] * d[1] + e[i][2] * d[2];
-    }
+    double t = sk->t, a[3], e[3][3], d[3], et[3], xi[3] = {0, 0, 0}, mu[4], sum = 0;
+    skin_frame(sk->balls, s, a, e);
+    for (int c = 0; c < 3; c++)
+        d[c] = x[c] - a[c];
     for (int i = 0; i < s->k; i++)
-        for (int j = 0; j < s->k; j++) {
-            xa[i] += s->ginv[i][j] * ea[j];
-            xd[i] += s->ginv[i][j] * ed[j];
-        }
-    double p0[3], pd[3], q0[3], qd[3];
-    for (int k = 0; k < 3; k++) {
-        double ra = 0, rd = 0; /* the projections onto aff X, relative to its first centre */
-        for (int i = 0; i < s->k; i++) {
-            ra += xa[i] * e[i][k];
-            rd += xd[i] * e[i][k];
-        }
-        p0[k] = sa[k] + ra - f[k];
-        pd[k] = rd;
-        q0[k] = r[k] - ra;
-        qd[k] = d[k] - rd;
+        et[i] = e[i][0] * d[0] + e[i][1] * d[1] + e[i][2] * d[2];
+    for (int i = 0; i < s->k; i++) {
+        for (int j = 0; j < s->k; j++)
+            xi[i] += s->ginv[i][j] * et[j];
+        mu[i + 1] = s->mu_f[i] + (xi[i] - s->mu_f[i]) / (1 - t);
+        sum += mu[i + 1];
     }
-    double qq = 0, qq0 = 0, q00 = 0, pp = 0, pp0 = 0, p00 = 0;
-    for (int k = 0; k < 3; k++) {
-        qq += qd[k] * qd[k];
-        qq0 += q0[k] * qd[k];
-        q00 += q0[k] * q0[k];
-        pp += pd[k] * pd[k];
-        pp0 += p0[k] * pd[k];
-        p00 += p0[k] * p0[k];
+    mu[0] = 1 - sum;
+    if (grad) { /* envelope theorem: grad G = 2 (x - z*), z* = a + sum_i mu_i e_(i-1) */
+        for (int c = 0; c < 3; c++) {
+            grad[c] = d[c];
+            for (int i = 1; i <= s->k; i++)
+                grad[c] -= mu[i] * e[i - 1][c];
+            grad[c] *= 2;
+        }
     }
-    c[0] = qq - kappa * pp;
-    c[1] = 2 * (qq0 - kappa * pp0);
-    c[2] = q00 - kappa * p00 + sk->t * skin_weight(sk->balls, s, sa, f);
+    return skin_combination_value(sk->balls, s, t, a, e, mu, x);
+}
+
+static void at(const double a[3], const double d[3], double s, double x[3])
+{
+    for (int k = 0; k < 3; k++)
+        x[k] = a[k] + s * d[k];
+}
+
+/* The coefficients of G(a + (lo + u (hi - lo)) d) = c[0] u^2 + c[1] u + c[2], u in [0, 1], on
+ * the mixed cell of simplex id, which holds that part of the line. G is a quadratic there, so
+ * its values at u = 0, 1/2, 1 determine it; they come from cell_value, not from the quadric's
+ * coefficients, which cancel badly when X's focus is far (round 18). */
+static void quadric_line(const fl_skin_function *sk, uint32_t id, const double a[3],
+                         const double d[3], double lo, double hi, double c[3])
+{
+    double x[3];
+    at(a, d, lo, x);
+    double g0 = cell_value(sk, id, x, NULL);
+    at(a, d, 0.5 * (lo + hi), x);
+    double gm = cell_value(sk, id, x, NULL);
+    at(a, d, hi, x);
+    double g1 = cell_value(sk, id, x, NULL);
+    c[0] = 2 * (g0 - 2 * gm + g1);
+    c[1] = g1 - g0 - c[0];
+    c[2] = g0;
 }
 
 static double poly(const double c[3], double s)
@@ -109,12 +118,6 @@ static double quadratic_root(const double c[3], double lo, double hi)
     return s;
 }
 
-static void at(const double a[3], const double d[3], double s, double x[3])
-{
-    for (int k = 0; k < 3; k++)
-        x[k] = a[k] + s * d[k];
-}
-
 /* Regula falsi (Illinois) with a bisection step whenever a step shrinks the bracket by less
  * than half, until the bracket no longer shrinks, or until its two ends lie in one mixed cell
  * (then the closed form finishes). The end with the smaller |G| is the answer. */
@@ -124,7 +127,7 @@ void skin_edge_root(const fl_skin_function *g, const double a[3], const double b
     uint32_t own = hint ? *hint : 0, *h = hint ? hint : &own;
     double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, coef[3];
     if (ca != SKIN_NO_CELL && ca == cb) {
-        quadric_line(g, ca, a, d, coef);
+        quadric_line(g, ca, a, d, 0, 1, coef);
         at(a, d, quadratic_root(coef, 0, 1), x);
         return;
     }
@@ -135,8 +138,8 @@ void skin_edge_root(const fl_skin_function *g, const double a[3], const double b
     int side = 0;
     for (int it = 0; it < 200 && glo < 0 && ghi > 0; it++) {
         if (clo != SKIN_NO_CELL && clo == chi) {
-            quadric_line(g, clo, a, d, coef);
-            at(a, d, quadratic_root(coef, lo, hi), x);
+            quadric_line(g, clo, a, d, lo, hi, coef);
+            at(a, d, lo + (hi - lo) * quadratic_root(coef, 0, 1), x);
             *evaluations += ev;
             return;
         }
@@ -180,7 +183,7 @@ void skin_edge_root(const fl_skin_function *g, const double a[3], const double b
     memcpy(x, fabs(gl) <= fabs(gh) ? xl : xh, sizeof(xl));
 }
 
-/* |G(v)| / |grad G(v)| at one point: the gradient of the cell's quadric, 2 q - 2 t/(1-t) p. */
+/* |G(v)| / |grad G(v)| at one point: the gradient of the cell's quadric, 2 (v - z*). */
 static double offset_at(const fl_skin_function *g, const double *v, double h, uint32_t *hint,
                         size_t *ev)
 {
@@ -188,12 +191,7 @@ static double offset_at(const fl_skin_function *g, const double *v, double h, ui
     uint32_t c = skin_locate(g, v, hint, &val);
     ++*ev;
     if (c != SKIN_NO_CELL) {
-        for (int k = 0; k < 3; k++) { /* d/ds of the quadric along each axis at s = 0 */
-            double e[3] = {0, 0, 0}, coef[3];
-            e[k] = 1;
-            quadric_line(g, c, v, e, coef);
-            grad[k] = coef[1];
-        }
+        cell_value(g, c, v, grad);
     } else {
         double d = 1e-5 * h;
         for (int k = 0; k < 3; k++) {

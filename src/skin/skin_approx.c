@@ -60,7 +60,7 @@ static fl_status mesh_checked(fl_skin_approx *a, const fl_skin_options *so, fl_e
     /* no vertex offsets: they cost a walk a vertex and the certified Hausdorff distance
      * measures what matters */
     fl_skin_stats ss;
-    fl_status st = skin_mesh_run(a->star.xyzw, a->star.count, so, &a->skin, &ss, 0, err);
+    fl_status st = skin_mesh_run(a->star.xyzw, a->star.count, so, &a->skin, &ss, 0, NULL, err);
     if (st != FL_OK) return st;
     a->repairs = ss.repairs;
     a->cell = so->cell;

@@ -61,7 +61,7 @@ fl_status fl_skin_mesh_checked(const double *xyzw, size_t n, const fl_skin_optio
         o.grade = plan[i];
         fl_mesh m = {0};
         fl_skin_stats s;
-        st = fl_skin_mesh(xyzw, n, &o, &m, &s, err);
+        st = skin_mesh_run(xyzw, n, &o, &m, &s, 1, betti, err);           /* fl_skin_mesh */
         if (st == FL_ERR_INPUT && plan[i] > 0 && i + 1 < steps) continue; /* too many leaves */
         if (st != FL_OK) {
             fl_mesh_free(out);

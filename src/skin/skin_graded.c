@@ -193,7 +193,9 @@ static fl_status make_sources(const fl_skin_function *g, const double *xyzw, siz
                               double grade, double hmax, const fl_vec *boxes, fl_vec *src,
                               fl_vec *foci, fl_error *err)
 {
-    /* the boxes of local refinement (fl_skin_options.repair): the ball round each */
+    /* the boxes of local refinement (fl_skin_options.repair): each is a source of size b->h
+     * over the ball circumscribing it (radius 0 for a point, lo == hi: the repair's mesh
+     * vertices) */
     for (size_t i = 0; boxes && i < boxes->count; i++) {
         const skin_box *b = (const skin_box *)boxes->data + i;
         size_src s = {{0, 0, 0}, 0, b->h};

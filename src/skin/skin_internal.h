@@ -306,15 +306,19 @@ void skin_hand_over(fl_vec *xyz, fl_vec *tri, fl_mesh *out);
 /* The graded mesher (skin_graded.c): marching tetrahedra on the Delaunay tetrahedralization of
  * the corners of an octree refined by the local feature size of the skin. Same contract as the
  * uniform path of fl_skin_mesh; g is the skin function of the balls, o->cell (> 0) the largest
- * cell. Fills out and the grid fields of stats (cell = the smallest leaf, cubes = leaves). */
+ * cell. boxes (skin_box, or NULL): the local repair's requests (skin_mesh.c), each asking for
+ * cells of at most its h over the ball round it; a point (lo == hi) asks for it there. Fills out
+ * and the grid fields of stats (cell = the smallest leaf, cubes = leaves). */
 fl_status skin_graded_mesh(const fl_skin_function *g, const double *xyzw, size_t n,
                            const fl_skin_options *o, const fl_vec *boxes, fl_mesh *out,
                            fl_skin_stats *stats, fl_error *err);
 
 /* fl_skin_mesh, with stats->max_vertex_offset measured only when `offsets` (it costs a walk
- * a vertex; fl_skin_approx_build measures the certified distance instead). */
+ * a vertex; fl_skin_approx_build measures the certified distance instead). betti: the Betti
+ * numbers of the union (fl_balls_union_betti) when the caller has them, for the repair; NULL
+ * lets the repair compute them. */
 fl_status skin_mesh_run(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
-                        fl_skin_stats *stats, int offsets, fl_error *err);
+                        fl_skin_stats *stats, int offsets, const long long *betti, fl_error *err);
 
 /* A box [lo, hi] that wants cells of at most h (skin_defects.c -> skin_graded.c). */
 typedef struct skin_box {

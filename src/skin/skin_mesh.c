@@ -559,13 +559,18 @@ static fl_status surface_points(const fl_mesh *m, const fl_vec *boxes, size_t fi
  * the boxes (surface_points) and mesh again, at most o->repair times. The grid away from the
  * boxes stays as it was (position-hashed corner weights, skin_graded.c). Stops early when no
  * box is found or the grid would exceed its leaf cap (the last mesh is kept). gs->repairs
- * counts the meshes redone. */
+ * counts the meshes redone. betti: the union's Betti numbers when the caller has them (NULL:
+ * computed here). */
 static fl_status repair(const fl_skin_function *g, const double *xyzw, size_t n,
-                        const fl_skin_options *o, fl_vec *sizes, fl_mesh *out, fl_skin_stats *gs,
-                        fl_error *err)
+                        const fl_skin_options *o, const long long *betti, fl_vec *sizes,
+                        fl_mesh *out, fl_skin_stats *gs, fl_error *err)
 {
     long long b[3];
-    fl_status st = fl_balls_union_betti(xyzw, n, b, err);
+    fl_status st = FL_OK;
+    if (betti)
+        memcpy(b, betti, sizeof b);
+    else
+        st = fl_balls_union_betti(xyzw, n, b, err);
     if (st != FL_OK) return st;
     long long euler_expected = 2 * (b[0] - b[1] + b[2]), comps_expected = b[0] + b[2];
     fl_vec boxes;
@@ -612,7 +617,7 @@ static fl_status repair(const fl_skin_function *g, const double *xyzw, size_t n,
 
 /* The graded path (skin_graded.c) with the checks of the uniform one. */
 static fl_status graded(const double *xyzw, size_t n, const fl_skin_options *o, fl_mesh *out,
-                        fl_skin_stats *stats, int offsets, fl_error *err)
+                        fl_skin_stats *stats, int offsets, const long long *betti, fl_error *err)
 {
     fl_skin_function *g = NULL;
     fl_status st = skin_function_new_mesher(xyzw, n, o->t, &g, err);
@@ -629,7 +634,7 @@ static fl_status graded(const double *xyzw, size_t n, const fl_skin_options *o, 
     fl_vec sizes; /* skin_box, the points of local refinement */
     fl_vec_init(&sizes, sizeof(skin_box));
     st = skin_graded_mesh(g, xyzw, n, &go, &sizes, out, &gs, err);
-    if (!st && go.repair > 0) st = repair(g, xyzw, n, &go, &sizes, out, &gs, err);
+    if (!st && go.repair > 0) st = repair(g, xyzw, n, &go, betti, &sizes, out, &gs, err);
     fl_vec_free(&sizes);
     if (st) fl_mesh_free(out);
     /* leaves below the coordinates' resolution make points coincide (see fl_skin_mesh) */
@@ -674,11 +679,11 @@ static size_t graded_leaf_cap(void)
 fl_status fl_skin_mesh(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
                        fl_skin_stats *stats, fl_error *err)
 {
-    return skin_mesh_run(xyzw, n, opt, out, stats, stats != NULL, err);
+    return skin_mesh_run(xyzw, n, opt, out, stats, stats != NULL, NULL, err);
 }
 
 fl_status skin_mesh_run(const double *xyzw, size_t n, const fl_skin_options *opt, fl_mesh *out,
-                        fl_skin_stats *stats, int offsets, fl_error *err)
+                        fl_skin_stats *stats, int offsets, const long long *betti, fl_error *err)
 {
     if (!out) return fl_fail(err, FL_ERR_USAGE, NULL, -1, "skin: NULL output");
     memset(out, 0, sizeof *out);
@@ -691,7 +696,7 @@ fl_status skin_mesh_run(const double *xyzw, size_t n, const fl_skin_options *opt
         o.repair < 0)
         return fl_fail(err, FL_ERR_USAGE, NULL, -1,
                        "skin: cell and grade must be finite numbers >= 0, repair >= 0");
-    if (o.grade > 0) return graded(xyzw, n, &o, out, stats, offsets, err);
+    if (o.grade > 0) return graded(xyzw, n, &o, out, stats, offsets, betti, err);
     marcher m;
     memset(&m, 0, sizeof m);
     fl_vec_init(&m.xyz, 3 * sizeof(double));

@@ -106,15 +106,16 @@ int skin_simplex_setup(const double *xyzw, const uint32_t *idx, int k, skin_simp
     return 0;
 }
 
-/* The value at x of the member of conv(X) nearest to X's minimiser z* (its barycentric
- * coordinates clamped to >= 0, skin_combination_value): never below G(x) beyond rounding, and
- * G(x) itself when z* lies in X. Until round 18 a z* more than 1e-12 outside X gave HUGE_VAL;
+/* skin_simplex_value (skin_internal.h): skin_combination_value at X's minimiser z*, its
+ * barycentric coordinates clamped to >= 0: never below G(x) beyond rounding, and G(x) itself
+ * when z* lies in X. Until round 18 a z* more than 1e-12 outside X gave HUGE_VAL;
  * but for a needle simplex (Gram condition ~1e10 and more) the computed coordinates are off by
  * far more than that, and the true minimiser was rejected: G = 0.94 where it is 8e-7
  * (tests/skin/test_skin_needle.c). A clamped candidate is still a member of conv(B), so
  * accepting every candidate keeps the scan's minimum an upper bound that the minimiser's
  * simplex makes exact. */
-static double simplex_value(const fl_skin_function *sk, const skin_simplex *s, const double *x)
+double skin_simplex_value(const fl_skin_function *sk, const skin_simplex *s, const double x[3],
+                          double grad[3])
 {
     double t = sk->t, a[3], e[3][3], d[3], mu[4], xi[3] = {0, 0, 0};
     skin_frame(sk->balls, s, a, e);
@@ -131,6 +132,14 @@ static double simplex_value(const fl_skin_function *sk, const skin_simplex *s, c
         sum += mu[i + 1];
     }
     mu[0] = 1 - sum;
+    if (grad) { /* envelope theorem: grad G = 2 (x - z*), z* = a + sum_i mu_i e_(i-1) */
+        for (int c = 0; c < 3; c++) {
+            grad[c] = d[c];
+            for (int i = 1; i <= s->k; i++)
+                grad[c] -= mu[i] * e[i - 1][c];
+            grad[c] *= 2;
+        }
+    }
     return skin_combination_value(sk->balls, s, t, a, e, mu, x);
 }
 
@@ -176,7 +185,7 @@ double skin_value_scan(const fl_skin_function *skin, const double x[3])
             skin_stat_scan_evaluated++;
         }
 #endif
-        double v = simplex_value(skin, &skin->simplex[id], x);
+        double v = skin_simplex_value(skin, &skin->simplex[id], x, NULL);
         if (v < best) best = v;
     }
     return best;

@@ -178,6 +178,14 @@ static inline double skin_combination_value(const double *balls, const skin_simp
     return g + t * (var - ws);
 }
 
+/* G(x) from simplex s's mixed cell (skin_function.c): skin_combination_value at the barycentric
+ * coordinates of s's minimiser z*; with grad (may be NULL), also 2 (x - z*), the gradient of G
+ * there. Never below G(x) beyond rounding; G(x) when z* lies in s. The scan takes its minimum
+ * over the candidates, the edge roots and vertex offsets (skin_root.c) read it in the cell the
+ * walk found. */
+double skin_simplex_value(const fl_skin_function *sk, const skin_simplex *s, const double x[3],
+                          double grad[3]);
+
 struct fl_skin_function {
     double t;
     double wmax; /* largest ball weight (> 0) */

@@ -17,35 +17,6 @@
 #include "delaunay/delaunay_internal.h"
 #include "skin/skin_internal.h"
 
-/* G at x from the quadric of simplex id's mixed cell (x in that cell, to rounding), in the
- * cancellation-free form skin_combination_value; with grad, also its gradient there. */
-static double cell_value(const fl_skin_function *sk, uint32_t id, const double x[3], double grad[3])
-{
-    const skin_simplex *s = &sk->simplex[id];
-    double t = sk->t, a[3], e[3][3], d[3], et[3], xi[3] = {0, 0, 0}, mu[4], sum = 0;
-    skin_frame(sk->balls, s, a, e);
-    for (int c = 0; c < 3; c++)
-        d[c] = x[c] - a[c];
-    for (int i = 0; i < s->k; i++)
-        et[i] = e[i][0] * d[0] + e[i][1] * d[1] + e[i][2] * d[2];
-    for (int i = 0; i < s->k; i++) {
-        for (int j = 0; j < s->k; j++)
-            xi[i] += s->ginv[i][j] * et[j];
-        mu[i + 1] = s->mu_f[i] + (xi[i] - s->mu_f[i]) / (1 - t);
-        sum += mu[i + 1];
-    }
-    mu[0] = 1 - sum;
-    if (grad) { /* envelope theorem: grad G = 2 (x - z*), z* = a + sum_i mu_i e_(i-1) */
-        for (int c = 0; c < 3; c++) {
-            grad[c] = d[c];
-            for (int i = 1; i <= s->k; i++)
-                grad[c] -= mu[i] * e[i - 1][c];
-            grad[c] *= 2;
-        }
-    }
-    return skin_combination_value(sk->balls, s, t, a, e, mu, x);
-}
-
 static void at(const double a[3], const double d[3], double s, double x[3])
 {
     for (int k = 0; k < 3; k++)
@@ -54,18 +25,19 @@ static void at(const double a[3], const double d[3], double s, double x[3])
 
 /* The coefficients of G(a + (lo + u (hi - lo)) d) = c[0] u^2 + c[1] u + c[2], u in [0, 1], on
  * the mixed cell of simplex id, which holds that part of the line. G is a quadratic there, so
- * its values at u = 0, 1/2, 1 determine it; they come from cell_value, not from the quadric's
+ * its values at u = 0, 1/2, 1 determine it; they come from skin_simplex_value, not from the
+ * quadric's
  * coefficients, which cancel badly when X's focus is far (round 18). */
 static void quadric_line(const fl_skin_function *sk, uint32_t id, const double a[3],
                          const double d[3], double lo, double hi, double c[3])
 {
     double x[3];
     at(a, d, lo, x);
-    double g0 = cell_value(sk, id, x, NULL);
+    double g0 = skin_simplex_value(sk, &sk->simplex[id], x, NULL);
     at(a, d, 0.5 * (lo + hi), x);
-    double gm = cell_value(sk, id, x, NULL);
+    double gm = skin_simplex_value(sk, &sk->simplex[id], x, NULL);
     at(a, d, hi, x);
-    double g1 = cell_value(sk, id, x, NULL);
+    double g1 = skin_simplex_value(sk, &sk->simplex[id], x, NULL);
     c[0] = 2 * (g0 - 2 * gm + g1);
     c[1] = g1 - g0 - c[0];
     c[2] = g0;
@@ -191,7 +163,7 @@ static double offset_at(const fl_skin_function *g, const double *v, double h, ui
     uint32_t c = skin_locate(g, v, hint, &val);
     ++*ev;
     if (c != SKIN_NO_CELL) {
-        cell_value(g, c, v, grad);
+        skin_simplex_value(g, &g->simplex[c], v, grad);
     } else {
         double d = 1e-5 * h;
         for (int k = 0; k < 3; k++) {

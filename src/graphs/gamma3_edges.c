@@ -34,6 +34,7 @@
 #define G3_KD_AFTER 1       /* scan_edge goes from rings to the kd-tree after this ring */
 #define G3_QUICK_ERR 1e-5   /* bound on the error of gamma3_quick_angle (radians), see there */
 #define G3_WIT_MAX 24       /* witnesses kept for one dropped pair */
+#define G3_MAX_BINS 4096
 
 typedef struct g3_ctx {
     const graph_grid *grid;
@@ -46,9 +47,12 @@ typedef struct g3_ctx {
     double width;     /* 2 pi / bins */
     int reach;        /* bins a point can block on each side of its own */
     double ca[G3_MAX_REACH + 1], cb[G3_MAX_REACH + 1]; /* cos, s sin of the worst angle */
+    double inv_c[G3_MAX_REACH + 1];                    /* 1 / (ca^2 - cb^2) */
     double kill[G3_MAX_REACH + 1]; /* f/l below which a point's threshold is under l/sqrt(3) */
     int quick_reach;  /* the same for the quick drop test, whose angles err by G3_QUICK_ERR */
     int quick_full;   /* the last quick_point call killed its whole reach */
+    uint64_t qdead[G3_MAX_BINS / 64]; /* the bins the quick tests killed (bit k: bin k) */
+    double inv_width;                 /* bins / (2 pi) */
     double quick_kill[G3_MAX_REACH + 1];
     int plain;        /* 1: the per-pair scan alone (no quick drop test), for the tests */
     int witness;      /* 1: witness reuse (docs/gamma.md, "Round 11: witness reuse") */
@@ -70,6 +74,8 @@ typedef struct g3_ctx {
     double *limit;    /* H[j] of the current edge */
     unsigned char *dead; /* bins whose limit is below l/sqrt(3) (no third vertex there) */
     size_t dead_count;
+    double h_min;     /* l/sqrt(3), less a margin, of the current edge (scan_edge) */
+    size_t low_count; /* bins dead or with a limit below h_min: all of them drop the edge */
     fl_vec seen; /* the points of the rings scanned around the current edge's midpoint */
     fl_vec scan; /* scratch of gamma_triangle_check */
 } g3_ctx;
@@ -108,8 +114,8 @@ static int edge_init(g3_edge *E, const double *xyz, uint32_t a, uint32_t b)
 /* The components of p - m normal to the edge, (x1, x2) in the frame (u1, u2); returns 0 when
  * the angle is ill-conditioned (p within 1e-6 |p - m| of the axis, or not finite). *dist2 =
  * |p - m|^2, *radius = the distance from the axis. */
-static int axis_plane(const g3_edge *E, const double *p, double *x1, double *x2, double *dist2,
-                      double *radius)
+static inline int axis_plane(const g3_edge *E, const double *p, double *x1, double *x2,
+                             double *dist2, double *radius)
 {
     double d[3] = {p[0] - E->m[0], p[1] - E->m[1], p[2] - E->m[2]};
     *x1 = dot3(d, E->u1);
@@ -120,18 +126,21 @@ static int axis_plane(const g3_edge *E, const double *p, double *x1, double *x2,
     return r2 > 1e-12 * *dist2 && isfinite(r2);
 }
 
-/* The cylindrical coordinates of p around the edge: returns the angle in [-pi, pi], or NAN when
- * it is ill-conditioned (see axis_plane). */
+/* The cylindrical coordinates of p around the edge: returns the angle in [-pi, pi] within
+ * G3_QUICK_ERR (gamma3_quick_angle; the scan's tables allow that error for both the blocking
+ * point and the third vertex), or NAN when it is ill-conditioned (see axis_plane). */
 static double axis_coords(const g3_edge *E, const double *p, double *dist2, double *radius)
 {
     double x1, x2;
     if (!axis_plane(E, p, &x1, &x2, dist2, radius)) return NAN;
-    return atan2(x2, x1);
+    return gamma3_quick_angle(x1, x2);
 }
 
 static size_t bin_of(const g3_ctx *c, double angle)
 {
-    double k = floor((angle + G3_PI) / c->width);
+    /* A product instead of a division: near a bin edge the bin may be the neighbour, i.e. the
+     * angle is off its bin by rounding (1e-15 rad), far inside the 1e-9 of kill_table. */
+    double k = floor((angle + G3_PI) * c->inv_width);
     if (!(k >= 0)) return 0;
     return k >= (double)c->bins ? c->bins - 1 : (size_t)k;
 }
@@ -157,16 +166,23 @@ static void block_point(g3_ctx *c, uint32_t q, double angle, double f, double l,
         size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
         if (c->dead[k]) continue;
         int far = d < 0 ? (int)-d : (int)d;
+        int low = c->limit[k] < c->h_min;
         if (f < l * c->kill[far]) {
             c->dead[k] = 1;
             c->dead_count++;
+            c->low_count += !low;
             c->killer[k] = q;
             continue;
         }
-        double h = threshold(c->ca[far], c->cb[far], f, l2);
+        /* sqrt(f^2 + C l^2) >= |f|: a bin whose limit is already below that lower bound of
+         * the threshold keeps its limit (skipping an update only keeps a larger limit). */
+        double A = c->ca[far], B = c->cb[far];
+        if ((A * f + B * fabs(f)) * c->inv_c[far] >= c->limit[k]) continue;
+        double h = threshold(A, B, f, l2);
         if (h < c->limit[k]) {
             c->limit[k] = h;
             c->killer[k] = q;
+            c->low_count += !low && h < c->h_min;
         }
     }
 }
@@ -188,8 +204,9 @@ static double max_limit(const g3_ctx *c)
 
 /* atan2(y, x) for finite (x, y) != (0, 0), within G3_QUICK_ERR: a minimax polynomial for atan on
  * [0, 1] (error below 1.7e-6 rad, checked densely by tests/graphs/test_gamma3_quick.c) and the
- * octant symmetries. Only the quick drop test uses it; its kill arcs are shortened by
- * G3_QUICK_ERR, so the error cannot make it drop a pair the exact arcs would not. */
+ * octant symmetries. The quick drop test's kill arcs are shortened by G3_QUICK_ERR and the
+ * scan's tables by twice that (axis_coords), so the error cannot make either drop a pair or a
+ * third vertex the exact angles would keep. */
 double gamma3_quick_angle(double x, double y)
 {
     double ax = fabs(x), ay = fabs(y), mx = fmax(ax, ay), mn = fmin(ax, ay);
@@ -210,6 +227,30 @@ static const signed char quick_cells[27][3] = {
     {-1, 1, 1},  {1, 1, 0},   {-1, -1, 0}, {1, -1, 0},  {-1, 1, 0}, {1, 0, 1},   {-1, 0, -1},
     {1, 0, -1},  {-1, 0, 1},  {0, 1, 1},   {0, -1, -1}, {0, 1, -1}, {0, -1, 1}};
 
+/* The number of bits set (without a library call on targets lacking the instruction). */
+static inline size_t popcount64(uint64_t x)
+{
+    x = x - ((x >> 1) & 0x5555555555555555u);
+    x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+    x = (x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fu;
+    return (size_t)((x * 0x0101010101010101u) >> 56);
+}
+
+/* Marks the bins lo..hi (lo <= hi < bins) dead in c->qdead; returns how many were alive. */
+static size_t kill_bins(g3_ctx *c, size_t lo, size_t hi)
+{
+    size_t killed = 0;
+    for (size_t w = lo / 64; w <= hi / 64; w++) {
+        size_t from = w == lo / 64 ? lo % 64 : 0, to = w == hi / 64 ? hi % 64 : 63;
+        uint64_t bits = (to == 63 ? ~(uint64_t)0 : (((uint64_t)1 << (to + 1)) - 1)) &
+                        ~(((uint64_t)1 << from) - 1);
+        bits &= ~c->qdead[w];
+        killed += popcount64(bits);
+        c->qdead[w] |= bits;
+    }
+    return killed;
+}
+
 /* One point of the quick drop test: kills the bins within its kill arc; returns the number of
  * bins still alive. */
 static size_t quick_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l2,
@@ -226,13 +267,12 @@ static size_t quick_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, dou
         reach++;
     c->quick_full = reach == c->quick_reach;
     long nb = (long)c->bins, home = (long)bin_of(c, gamma3_quick_angle(x1, x2));
-    for (long d = -reach; d <= reach; d++) {
-        long kk = home + d;
-        size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
-        left -= !c->dead[k];
-        c->dead[k] = 1;
-    }
-    return left;
+    long lo = home - reach, hi = home + reach;
+    if (lo < 0)
+        return left - kill_bins(c, 0, (size_t)hi) - kill_bins(c, (size_t)(lo + nb), (size_t)nb - 1);
+    if (hi >= nb)
+        return left - kill_bins(c, (size_t)lo, (size_t)nb - 1) - kill_bins(c, 0, (size_t)(hi - nb));
+    return left - kill_bins(c, (size_t)lo, (size_t)hi);
 }
 
 /* quick_point, and the bookkeeping of witness reuse: a point that kills bins goes to c->wit,
@@ -388,8 +428,7 @@ static int box_needed(const g3_ctx *c, const g3_edge *E, const gamma3_kd_node *n
  * boxes that box_needed proves to hold no admissible third vertex under the current limits
  * (which only decrease). Returns 1 when the edge is dead, 0 when the points seen hold every
  * admissible third vertex, -1 out of memory. */
-static int kd_scan(g3_ctx *c, const g3_edge *E, size_t r_done, double l, double l2,
-                   double h_min)
+static int kd_scan(g3_ctx *c, const g3_edge *E, size_t r_done, double l, double l2)
 {
     const uint32_t *items = c->seen.data;
     for (size_t i = 0; i < c->seen.count; i++)
@@ -430,7 +469,7 @@ static int kd_scan(g3_ctx *c, const g3_edge *E, size_t r_done, double l, double 
             if (fl_vec_push(&c->seen, &q, 1)) return -1;
             if (see_point(c, E, q, l, l2)) return 1;
         }
-        if (max_limit(c) < h_min) return 1;
+        if (c->low_count == c->bins) return 1; /* max_limit(c) < h_min */
     }
     return 0;
 }
@@ -446,6 +485,8 @@ static int scan_edge(g3_ctx *c, const g3_edge *E)
         c->limit[k] = INFINITY;
     memset(c->dead, 0, c->bins);
     c->dead_count = 0;
+    c->h_min = h_min;
+    c->low_count = 0;
     c->seen.count = 0;
     for (size_t r = 0;; r++) {
         int beyond = 0;
@@ -465,7 +506,7 @@ static int scan_edge(g3_ctx *c, const g3_edge *E)
                 c->pair_stamp = 1;
             }
             if (c->stats) c->stats->kd_walks++;
-            return kd_scan(c, E, r, l, l2, h_min);
+            return kd_scan(c, E, r, l, l2);
         }
     }
 }
@@ -494,6 +535,8 @@ static int sort3_check(g3_ctx *c, uint32_t a, uint32_t b, uint32_t q, graph_buil
     if (t[0] > t[1]) x = t[0], t[0] = t[1], t[1] = x;
     if (t[1] > t[2]) x = t[1], t[1] = t[2], t[2] = x;
     if (t[0] > t[1]) x = t[0], t[0] = t[1], t[1] = x;
+    /* The kd-tree exists unless plain (the round-9 path, kept as the tests' reference). */
+    if (c->kd.nodes) return gamma_triangle_check_kd(&c->kd, c->params, c->kappa, t, &c->scan, out);
     return gamma_triangle_check(c->grid, c->params, c->kappa, t, &c->scan, out);
 }
 
@@ -509,7 +552,7 @@ static int edge_triangles(g3_ctx *c, uint32_t a, uint32_t b, graph_builder *out)
     }
     if (!c->plain) {
         size_t left = c->bins;
-        memset(c->dead, 0, c->bins);
+        memset(c->qdead, 0, ((c->bins + 63) / 64) * sizeof *c->qdead);
         c->wit_count = 0;
         c->extra_count = 0;
         if (c->witness) {
@@ -634,9 +677,13 @@ fl_status gamma3_edge_triangles_with(const graph_grid *grid, const fl_gamma_para
     /* Bins of width atan(1/s)/8: a point reaches 7 bins each side; a vertex of a bin d away
      * is at most (d+1) widths from it. Few bins for kappa near 0 (s near 0, wide arcs). */
     double arc = atan(1 / c.s), nb = ceil(2 * G3_PI / (arc / G3_BINS_PER_ARC));
-    c.bins = nb > 4096 || !(nb >= 1) ? 4096 : nb < 8 ? 8 : (size_t)nb;
+    c.bins = nb > G3_MAX_BINS || !(nb >= 1) ? G3_MAX_BINS : nb < 8 ? 8 : (size_t)nb;
     c.width = 2 * G3_PI / (double)c.bins;
-    c.reach = kill_table(&c, 0, c.ca, c.cb, c.kill);
+    c.inv_width = (double)c.bins / (2 * G3_PI);
+    /* The scan's angles (axis_coords) err by G3_QUICK_ERR for q and for the third vertex. */
+    c.reach = kill_table(&c, 2 * G3_QUICK_ERR, c.ca, c.cb, c.kill);
+    for (int d = 0; d <= c.reach; d++)
+        c.inv_c[d] = 1 / (c.ca[d] * c.ca[d] - c.cb[d] * c.cb[d]);
     c.quick_reach = kill_table(&c, G3_QUICK_ERR, NULL, NULL, c.quick_kill);
     c.plain = (pairs & GAMMA3_PLAIN_SCAN) != 0;
     c.witness = !c.plain && !(pairs & GAMMA3_NO_WITNESS) && c.n > 1;

@@ -70,6 +70,11 @@ typedef struct gamma3_kdtree {
 int gamma3_kdtree_build(gamma3_kdtree *t, const double *xyz, size_t n);
 void gamma3_kdtree_free(gamma3_kdtree *t);
 
+/* gamma_triangle_check over the kd-tree of the points instead of the grid's rings (the same
+ * decision and summary, gamma_triangles.c); `stack` is scratch (uint32_t). */
+int gamma_triangle_check_kd(const gamma3_kdtree *kd, const fl_gamma_params *p, double kappa,
+                            const uint32_t *t, fl_vec *stack, graph_builder *b);
+
 /* Per-pair callback of the recursion: 0 to go on, -1 out of memory. */
 typedef int (*gamma3_pair_fn)(void *ctx, uint32_t a, uint32_t b);
 

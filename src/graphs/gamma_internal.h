@@ -21,6 +21,12 @@ int gamma_side3(const double *a, const double *b, const double *c, const double 
 int gamma_in_circle(const double *a, const double *b, const double *w, const double *e);
 int gamma_in_sphere(const double *a, const double *b, const double *c, const double *w,
                     const double *e);
+/* The same when w's side (gamma_orient2(a, b, w), resp. gamma_side3(a, b, c, w); not 0) is
+ * known: one predicate instead of two. */
+int gamma_in_circle_side(const double *a, const double *b, const double *w, int w_side,
+                         const double *e);
+int gamma_in_sphere_side(const double *a, const double *b, const double *c, const double *w,
+                         int w_side, const double *e);
 
 /* Exact sign of sum_k coef[k] * (x[k]-y[k]).(u[k]-w[k]) over dim coordinates (fl_dot_sum_sign). */
 int gamma_exact_sum_sign(int terms, const double *coef, const double *const *x,

@@ -27,6 +27,20 @@ int gamma_in_sphere(const double *a, const double *b, const double *c, const dou
     return fl_insphere(a, b, c, w, e) * fl_orient3d(a, b, c, w);
 }
 
+/* The same two signs when w's side is already known (gamma_orient2(a, b, w), resp.
+ * gamma_side3(a, b, c, w) = -orient3d(a, b, c, w)), saving that predicate. */
+int gamma_in_circle_side(const double *a, const double *b, const double *w, int w_side,
+                         const double *e)
+{
+    return fl_incircle(a, b, w, e) * w_side;
+}
+
+int gamma_in_sphere_side(const double *a, const double *b, const double *c, const double *w,
+                         int w_side, const double *e)
+{
+    return -fl_insphere(a, b, c, w, e) * w_side;
+}
+
 int gamma_exact_sum_sign(int terms, const double *coef, const double *const *x,
                          const double *const *y, const double *const *u, const double *const *w,
                          int dim)

@@ -180,7 +180,10 @@ void gamma_summary_add(gamma_summary *s, const gamma_frame *f, const double *coo
         *w = i;
         return;
     }
-    int in = in_witness_ball(f, coords + (size_t)*w * (size_t)f->dim, p);
+    /* The witness is on p's side: its side predicate is known. */
+    const double *wp = coords + (size_t)*w * (size_t)f->dim;
+    int in = f->dim == 2 ? gamma_in_circle_side(f->v[0], f->v[1], wp, side, p)
+                         : gamma_in_sphere_side(f->v[0], f->v[1], f->v[2], wp, side, p);
     if (in > 0 || (in == 0 && i < *w)) *w = i;
 }
 

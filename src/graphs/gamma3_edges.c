@@ -76,6 +76,8 @@ typedef struct g3_ctx {
     size_t dead_count;
     double h_min;     /* l/sqrt(3), less a margin, of the current edge (scan_edge) */
     size_t low_count; /* bins dead or with a limit below h_min: all of them drop the edge */
+    double max_h;     /* live_max's cached value, valid unless max_dirty */
+    int max_dirty;
     fl_vec seen; /* the points of the rings scanned around the current edge's midpoint */
     fl_vec scan; /* scratch of gamma_triangle_check */
 } g3_ctx;
@@ -168,6 +170,7 @@ static void block_point(g3_ctx *c, uint32_t q, double angle, double f, double l,
         int far = d < 0 ? (int)-d : (int)d;
         int low = c->limit[k] < c->h_min;
         if (f < l * c->kill[far]) {
+            c->max_dirty = 1;
             c->dead[k] = 1;
             c->dead_count++;
             c->low_count += !low;
@@ -181,6 +184,7 @@ static void block_point(g3_ctx *c, uint32_t q, double angle, double f, double l,
         double h = threshold(A, B, f, l2);
         if (h < c->limit[k]) {
             c->limit[k] = h;
+            c->max_dirty = 1;
             c->killer[k] = q;
             c->low_count += !low && h < c->h_min;
         }
@@ -209,7 +213,7 @@ static double max_limit(const g3_ctx *c)
  * third vertex the exact angles would keep. */
 double gamma3_quick_angle(double x, double y)
 {
-    double ax = fabs(x), ay = fabs(y), mx = fmax(ax, ay), mn = fmin(ax, ay);
+    double ax = fabs(x), ay = fabs(y), mx = ax > ay ? ax : ay, mn = ax > ay ? ay : ax;
     double a = mn / mx, s = a * a;
     double r = a * (0.99997726 +
                     s * (-0.33262347 +
@@ -387,6 +391,20 @@ static int see_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l
     return c->dead_count == c->bins;
 }
 
+/* The largest limit over the live bins (INFINITY when one is NaN, -INFINITY when every bin is
+ * dead), recomputed only after block_point changed a bin. */
+static double live_max(g3_ctx *c)
+{
+    if (c->max_dirty) {
+        double h = -INFINITY;
+        for (size_t k = 0; k < c->bins; k++)
+            if (!c->dead[k]) h = isnan(c->limit[k]) ? INFINITY : fmax(h, c->limit[k]);
+        c->max_h = h;
+        c->max_dirty = 0;
+    }
+    return c->max_h;
+}
+
 /* Can a point of the box [lo, hi] still be an admissible third vertex of E? (docs/gamma.md,
  * "The far part of the scan".) An admissible c has |c-m| >= sqrt(3) l (ab is shortest) and
  * h_c >= g(|c-m|), g(d) = (d^2 - l^2) / (2d) increasing, so every c of the box has
@@ -394,12 +412,12 @@ static int see_point(g3_ctx *c, const g3_edge *E, uint32_t q, double l, double l
  * bin. The box's bins are those of the azimuth range of its points (centre angle +- asin(r/rho)
  * from the box's circumscribed ball), or all bins when the box comes near the axis (where
  * third_vertex_ok keeps points without an angle). Keeps the box whenever in doubt. */
-static int box_needed(const g3_ctx *c, const g3_edge *E, const gamma3_kd_node *nd, double l,
-                      double l2)
+static int box_needed(g3_ctx *c, const g3_edge *E, const gamma3_kd_node *nd, double l, double l2)
 {
     double v[3], dist2 = 0;
     for (int k = 0; k < 3; k++) {
-        double gap = fmax(fmax(nd->lo[k] - E->m[k], E->m[k] - nd->hi[k]), 0);
+        double below = nd->lo[k] - E->m[k], above = E->m[k] - nd->hi[k];
+        double gap = below > 0 ? below : above > 0 ? above : 0; /* finite: no fmax call */
         dist2 += gap * gap;
         v[k] = 0.5 * (nd->lo[k] + nd->hi[k]) - E->m[k];
     }
@@ -415,6 +433,10 @@ static int box_needed(const g3_ctx *c, const g3_edge *E, const gamma3_kd_node *n
         k1 = (long)floor((theta + hw + G3_PI) / c->width) + 1;
         if (!(k0 >= -nb && k1 <= 2 * nb && k1 - k0 < nb)) k0 = 0, k1 = nb - 1;
     }
+    /* The test below at the largest live limit, first: H + 1e-9 (|H| + l) increases with H. */
+    double top = live_max(c);
+    if (top == -INFINITY || G > top + 1e-9 * (fabs(top) + l)) return 0;
+    if (k0 == 0 && k1 == nb - 1) return 1;
     for (long kk = k0; kk <= k1; kk++) {
         size_t k = (size_t)(kk < 0 ? kk + nb : kk >= nb ? kk - nb : kk);
         double H = c->limit[k];
@@ -443,7 +465,8 @@ static int kd_scan(g3_ctx *c, const g3_edge *E, size_t r_done, double l, double 
         const gamma3_kd_node *nd = &nodes[id];
         double far2 = 0; /* the box's farthest distance from m: inside the rings when small */
         for (int k = 0; k < 3; k++) {
-            double w = fmax(fabs(nd->lo[k] - E->m[k]), fabs(nd->hi[k] - E->m[k]));
+            double wl = fabs(nd->lo[k] - E->m[k]), wh = fabs(nd->hi[k] - E->m[k]);
+            double w = wl > wh ? wl : wh;
             far2 += w * w;
         }
         if (sqrt(far2) < inner || !box_needed(c, E, nd, l, l2)) continue;
@@ -487,6 +510,7 @@ static int scan_edge(g3_ctx *c, const g3_edge *E)
     c->dead_count = 0;
     c->h_min = h_min;
     c->low_count = 0;
+    c->max_dirty = 1;
     c->seen.count = 0;
     for (size_t r = 0;; r++) {
         int beyond = 0;

@@ -154,9 +154,10 @@ static int box_meets(const gamma3_kd_node *nd, const gamma_frame *f, const side_
  * both sides' closed half-spaces, so they are never skipped). Since those regions only shrink,
  * a skipped point stays outside them: it has tau beyond its side's clamped witness offset, so
  * it cannot beat a witness with |tau| <= T', and when the witness is beyond T' (or missing) the
- * triangle is rejected whatever such points add, as in needed_radius. The balls are contained in
- * needed_radius's ball around C, so this visits a subset of what the rings would visit and
- * reaches the same decision and summary. */
+ * triangle is rejected whatever such points add, as in needed_radius. Early rejections are final
+ * for any set of points. So, like the rings, this reaches the brute force's decision and, for an
+ * accepted triangle, its witnesses; it sees far fewer points, since the balls lie inside
+ * needed_radius's ball around C and only their parts on their own side matter. */
 static int scan_triangle_kd(const gamma3_kdtree *kd, const gamma_frame *f, double kappa,
                             fl_vec *stack, gamma_summary *s)
 {
@@ -198,12 +199,21 @@ static int scan_triangle_kd(const gamma3_kdtree *kd, const gamma_frame *f, doubl
     return 0;
 }
 
-/* Adds t when the summary s says it is non-Delaunay and accepted. */
-static int accept(const gamma_summary *s, const gamma_frame *f, const double *coords,
-                  const fl_gamma_params *p, const uint32_t *t, graph_builder *b)
+/* The decision for t: the scan over the kd-tree when kd is given, else the grid's rings; adds
+ * t when the summary says it is non-Delaunay and accepted. */
+static int check(const graph_grid *g, const gamma3_kdtree *kd, const fl_gamma_params *p,
+                 double kappa, const uint32_t *t, fl_vec *scratch, graph_builder *b)
 {
+    const double *coords = kd ? kd->xyz : g->coords;
+    gamma_frame f;
+    if (!gamma_frame_init(&f, coords, 3, t)) return 0;
+    gamma_summary s;
+    gamma_summary_init(&s);
+    int r = kd ? scan_triangle_kd(kd, &f, kappa, scratch, &s)
+               : scan_triangle(g, &f, kappa, scratch, &s);
+    if (r != 0) return r < 0 ? -1 : 0;
     gamma_value v;
-    gamma_summary_value(s, f, coords, &v);
+    gamma_summary_value(&s, &f, coords, &v);
     if (v.never || v.delaunay || !gamma_params_accept(p, &v)) return 0;
     return graph_builder_add(b, t, v.c0, v.c1);
 }
@@ -211,25 +221,13 @@ static int accept(const gamma_summary *s, const gamma_frame *f, const double *co
 int gamma_triangle_check(const graph_grid *g, const fl_gamma_params *p, double kappa,
                          const uint32_t *t, fl_vec *ring, graph_builder *b)
 {
-    gamma_frame f;
-    if (!gamma_frame_init(&f, g->coords, 3, t)) return 0;
-    gamma_summary s;
-    gamma_summary_init(&s);
-    int r = scan_triangle(g, &f, kappa, ring, &s);
-    if (r != 0) return r < 0 ? -1 : 0;
-    return accept(&s, &f, g->coords, p, t, b);
+    return check(g, NULL, p, kappa, t, ring, b);
 }
 
 int gamma_triangle_check_kd(const gamma3_kdtree *kd, const fl_gamma_params *p, double kappa,
                             const uint32_t *t, fl_vec *stack, graph_builder *b)
 {
-    gamma_frame f;
-    if (!gamma_frame_init(&f, kd->xyz, 3, t)) return 0;
-    gamma_summary s;
-    gamma_summary_init(&s);
-    int r = scan_triangle_kd(kd, &f, kappa, stack, &s);
-    if (r != 0) return r < 0 ? -1 : 0;
-    return accept(&s, &f, kd->xyz, p, t, b);
+    return check(NULL, kd, p, kappa, t, stack, b);
 }
 
 fl_status gamma_lens_triangles(const double *xyz, size_t n, const fl_gamma_params *p, double kappa,

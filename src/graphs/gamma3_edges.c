@@ -197,15 +197,6 @@ static double apex_height(double d2, double r, double l2)
     return (d2 - l2) / (2 * r);
 }
 
-/* The largest admissible h over the live bins. */
-static double max_limit(const g3_ctx *c)
-{
-    double h = -INFINITY;
-    for (size_t k = 0; k < c->bins; k++)
-        if (!c->dead[k] && !(c->limit[k] <= h)) h = c->limit[k]; /* NaN: unbounded */
-    return isnan(h) ? INFINITY : h;
-}
-
 /* atan2(y, x) for finite (x, y) != (0, 0), within G3_QUICK_ERR: a minimax polynomial for atan on
  * [0, 1] (error below 1.7e-6 rad, checked densely by tests/graphs/test_gamma3_quick.c) and the
  * octant symmetries. The quick drop test's kill arcs are shortened by G3_QUICK_ERR and the
@@ -492,7 +483,7 @@ static int kd_scan(g3_ctx *c, const g3_edge *E, size_t r_done, double l, double 
             if (fl_vec_push(&c->seen, &q, 1)) return -1;
             if (see_point(c, E, q, l, l2)) return 1;
         }
-        if (c->low_count == c->bins) return 1; /* max_limit(c) < h_min */
+        if (c->low_count == c->bins) return 1; /* live_max(c) < h_min */
     }
     return 0;
 }
@@ -520,7 +511,7 @@ static int scan_edge(g3_ctx *c, const g3_edge *E)
         const uint32_t *items = c->seen.data;
         for (size_t i = first; i < c->seen.count; i++)
             if (see_point(c, E, items[i], l, l2)) return 1; /* typically within the first ring */
-        double H = max_limit(c);
+        double H = live_max(c);
         if (H < h_min) return 1;
         double need = H + sqrt(H * H + l2);
         if ((double)r * c->grid->cell >= need * (1 + 1e-7)) return 0;
